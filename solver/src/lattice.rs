@@ -1,0 +1,93 @@
+//! Sums over the undisturbed simple cubic lattice of spacing `l0`: the constants that calibrate
+//! the density summation (physics.md §1) and normalise the interparticle potential (§4).
+
+use crate::kernel::Kernel;
+use crate::physics::surface_tension::Kondo2007Potential;
+
+/// `Σ_j W(|r_ij|)` over a bulk lattice, self included [1/m³].
+///
+/// `l0³` times this is 1.0281 for Wendland C2 at `h = 1.05 l0`: a summation density with
+/// `m = ρ0 l0³` would start 2.8 % dense (physics.md §1), hence the calibration.
+pub fn kernel_sum<K: Kernel>(kernel: &K, l0: f64) -> f64 {
+    let n = (kernel.support_m() / l0).ceil() as i64 + 1;
+    let mut sum = 0.0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                let r = l0 * ((i * i + j * j + k * k) as f64).sqrt();
+                sum += kernel.w(r);
+            }
+        }
+    }
+    sum
+}
+
+/// Number of lattice neighbours strictly within `radius_m` (self excluded).
+pub fn neighbour_count(radius_m: f64, l0: f64) -> usize {
+    let n = (radius_m / l0).ceil() as i64 + 1;
+    let mut count = 0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                let r = l0 * ((i * i + j * j + k * k) as f64).sqrt();
+                if r > 0.0 && r < radius_m {
+                    count += 1;
+                }
+            }
+        }
+    }
+    count
+}
+
+/// The potential's surface sum `S` [m³] (physics.md §4): split the bulk lattice by a plane
+/// between two layers; `S = Σ_{i in one column below} Σ_{j above} P(r_ij)`.
+///
+/// The energy of the two new surfaces is `2σA = C (A/l0²) S`, hence `C = 2σ l0²/S`.
+pub fn potential_surface_sum(potential: &Kondo2007Potential) -> f64 {
+    let l0 = potential.l0_m;
+    let n = (potential.r_e_m / l0).ceil() as i64 + 1;
+    let mut s = 0.0;
+    // i: the column of sites (0, 0, −(a + ½) l0), a ≥ 0, below the plane z = 0;
+    // j: every site ((b, c, d + ½) l0), d ≥ 0, above it.
+    for a in 0..=n {
+        for d in 0..=n {
+            let dz = (a + d + 1) as f64 * l0;
+            for c in -n..=n {
+                for b in -n..=n {
+                    let dx = b as f64 * l0;
+                    let dy = c as f64 * l0;
+                    let r = (dx * dx + dy * dy + dz * dz).sqrt();
+                    s += potential.p(r);
+                }
+            }
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::WendlandC2;
+
+    #[test]
+    fn lattice_kernel_sum_exceeds_one_at_small_h() {
+        // At h = 1.05 l0 the Wendland C2 sum over only 32 neighbours overshoots the continuum
+        // integral (= 1): the reason for calibrating the density. At h = 2 l0 the sum is close
+        // to the integral (quadrature error of the lattice shrinks with more neighbours).
+        let l0 = 1e-4;
+        let s105 = kernel_sum(&WendlandC2::new(1.05 * l0), l0) * l0.powi(3);
+        let s20 = kernel_sum(&WendlandC2::new(2.0 * l0), l0) * l0.powi(3);
+        assert!(s105 > 1.01 && s105 < 1.05, "{s105}");
+        assert!((s20 - 1.0).abs() < 0.005, "{s20}");
+        assert!((s20 - 1.0).abs() < (s105 - 1.0).abs());
+    }
+
+    #[test]
+    fn neighbour_counts_of_the_lattice() {
+        // Shells of the simple cubic lattice: 6 at l0, 12 at √2 l0, 8 at √3 l0, 6 at 2 l0:
+        // 32 sites lie within 2.1 l0 (physics.md §4 quotes 32).
+        assert_eq!(neighbour_count(2.1, 1.0), 6 + 12 + 8 + 6);
+        assert_eq!(neighbour_count(1.01, 1.0), 6);
+    }
+}

@@ -1,0 +1,100 @@
+//! The search must return exactly the pairs a brute-force search finds — no missing pair (a
+//! force left out) and no extra one (the near/far split mislabelled).
+
+use super::*;
+use std::collections::BTreeSet;
+
+/// A deterministic pseudo-random generator (64-bit LCG, Knuth's constants).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn random_points(n: usize, box_m: f64, offset: f64, seed: u64) -> Vec<Vec3> {
+    let mut g = Lcg(seed);
+    (0..n)
+        .map(|_| {
+            Vec3::new(
+                g.next() * box_m + offset,
+                g.next() * box_m - offset,
+                g.next() * box_m,
+            )
+        })
+        .collect()
+}
+
+fn check(n_fluid: usize, n_wall: usize, near: f64, far: f64, skin: f64, seed: u64) {
+    let box_m = 1e-3;
+    let mut fluid = random_points(n_fluid, box_m, -3e-4, seed);
+    let mut walls = random_points(n_wall, box_m, -3e-4, seed + 7);
+    let mut s = NeighbourSearch::new(near, far, skin);
+    let perm = s.sort_order(&fluid).unwrap();
+    fluid = perm.iter().map(|&i| fluid[i as usize]).collect();
+    let permw = s.sort_order(&walls).unwrap();
+    walls = permw.iter().map(|&i| walls[i as usize]).collect();
+    let mut pos = fluid.clone();
+    pos.extend_from_slice(&walls);
+    s.build(&pos, n_fluid).unwrap();
+
+    let near_cut = near + skin;
+    let far_cut = far.max(near) + skin;
+    let expected_near: BTreeSet<(u32, u32)> = brute_force_pairs(&pos, near_cut)
+        .into_iter()
+        .filter(|&(i, j)| (i as usize) < n_fluid || (j as usize) < n_fluid)
+        .collect();
+    let expected_all: BTreeSet<(u32, u32)> = brute_force_pairs(&pos, far_cut)
+        .into_iter()
+        .filter(|&(i, _)| (i as usize) < n_fluid)
+        .collect();
+    let mut got_near = BTreeSet::new();
+    let mut got_all = BTreeSet::new();
+    for i in 0..pos.len() {
+        for &j in s.lists.near(i) {
+            assert!(got_near.insert((i as u32, j)), "pair listed twice");
+        }
+        if i < n_fluid {
+            for &j in s.lists.all(i) {
+                got_all.insert((i as u32, j));
+            }
+        } else {
+            assert!(s.lists.far(i).is_empty(), "walls list no far neighbours");
+            assert!(
+                s.lists.near(i).iter().all(|&j| (j as usize) < n_fluid),
+                "walls list fluid only"
+            );
+        }
+    }
+    assert_eq!(
+        got_near, expected_near,
+        "near pairs differ from brute force"
+    );
+    assert_eq!(got_all, expected_all, "all pairs differ from brute force");
+}
+
+#[test]
+fn search_returns_exactly_the_brute_force_pairs() {
+    // equal radii (r_e = support), a larger potential cut-off, a skin; fluid only and with walls
+    check(800, 0, 1.2e-4, 1.2e-4, 0.0, 1);
+    check(800, 0, 1.0e-4, 2.0e-4, 0.0, 2);
+    check(600, 300, 1.0e-4, 2.0e-4, 2e-5, 3);
+    check(500, 500, 1.5e-4, 1.0e-4, 1e-5, 4);
+}
+
+#[test]
+fn keys_order_rows_along_x() {
+    let inv = 1.0 / 1e-4;
+    let a = cell_key(&Vec3::new(0.5e-4, 0.0, 0.0), inv).unwrap();
+    let b = cell_key(&Vec3::new(1.5e-4, 0.0, 0.0), inv).unwrap();
+    let c = cell_key(&Vec3::new(-0.5e-4, 0.0, 0.0), inv).unwrap();
+    assert_eq!(b, a + 1);
+    assert_eq!(c + 1, a);
+    assert_eq!(cells::offset_key(a, 1, 0, 0), b);
+    assert!(cell_key(&Vec3::new(1e9, 0.0, 0.0), inv).is_err());
+    assert!(cell_key(&Vec3::new(f64::NAN, 0.0, 0.0), inv).is_err());
+}

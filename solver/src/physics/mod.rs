@@ -1,0 +1,7 @@
+//! The physical model: equation of state, density, forces, walls, and the per-phase tables.
+
+pub mod density;
+pub mod eos;
+pub mod forces;
+pub mod surface_tension;
+pub mod walls;

@@ -1,0 +1,453 @@
+//! Scene files: what a user writes (TOML), and its validation.
+//!
+//! A scene declares the materials (liquids with ρ0, μ, σ; solids with each liquid's contact
+//! angle; the interfacial tension of each pair of liquids), the bodies made of them, the
+//! discretisation, the time control, and the effects to build. Unknown keys are rejected;
+//! invalid values are reported with the field's path and value ([`SceneError`]).
+//!
+//! All particles sit on one simple cubic lattice with spacing `l0` whose sites are at
+//! `(i + ½, j + ½, k + ½) l0` for integers `i, j, k`; a body takes the sites inside its shape.
+
+mod shapes;
+mod validate;
+
+pub(crate) use shapes::for_sites_in_box as shapes_for_sites;
+pub use shapes::{BodyShape, Cut, WallShape};
+
+use crate::kernel::KernelKind;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// An error in a scene: it names the field and the value.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SceneError {
+    /// The file is not valid TOML or does not match the schema (unknown key, wrong type, …).
+    #[error("scene file: {0}")]
+    Parse(String),
+    /// A value is out of its physical or numerical range, or entries contradict each other.
+    #[error("{field} = {value}: {message}")]
+    Invalid {
+        /// Path of the offending field, e.g. `liquid[matte].density`.
+        field: String,
+        /// The offending value as written.
+        value: String,
+        /// What is wrong and what would be accepted.
+        message: String,
+    },
+}
+
+impl SceneError {
+    pub(crate) fn invalid(
+        field: impl Into<String>,
+        value: impl std::fmt::Display,
+        message: impl Into<String>,
+    ) -> Self {
+        SceneError::Invalid {
+            field: field.into(),
+            value: value.to_string(),
+            message: message.into(),
+        }
+    }
+}
+
+/// A complete scene.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Free text: what the scene is and where it comes from.
+    #[serde(default)]
+    pub description: String,
+    /// Spatial discretisation and numerical parameters.
+    pub discretisation: Discretisation,
+    /// End time, output interval and time-step control.
+    pub time: TimeControl,
+    /// The physical effects to build; an absent effect is not built.
+    #[serde(default)]
+    pub effects: Effects,
+    /// How density is computed.
+    #[serde(default)]
+    pub density: DensityControl,
+    /// Liquid phases.
+    #[serde(default, rename = "liquid")]
+    pub liquids: Vec<Liquid>,
+    /// Solid materials (walls are made of them).
+    #[serde(default, rename = "solid")]
+    pub solids: Vec<Solid>,
+    /// Interfacial tension of each pair of liquids that may touch.
+    #[serde(default, rename = "interface")]
+    pub interfaces: Vec<Interface>,
+    /// Liquid bodies.
+    #[serde(default, rename = "body")]
+    pub bodies: Vec<Body>,
+    /// Fixed solid walls.
+    #[serde(default, rename = "wall")]
+    pub walls: Vec<Wall>,
+}
+
+/// Spatial discretisation and numerical parameters.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Discretisation {
+    /// Initial particle spacing `l0` [m] (simple cubic lattice).
+    pub l0: f64,
+    /// Smoothing kernel. Default: Wendland C2 (Eq. 5, Natsui 2021).
+    #[serde(default)]
+    pub kernel: KernelKind,
+    /// Smoothing length over spacing, `h/l0` [-]. Default 1.05 (Natsui 2021 §2.2).
+    #[serde(default = "default_h_over_l0")]
+    pub h_over_l0: f64,
+    /// Cut-off of the interparticle potential over spacing, `r_e/l0` [-]. Default 4.2, the
+    /// 2021 paper's formula read literally (physics.md §4 leaves 2.1 vs 4.2 open). Chosen by
+    /// measurement: at 2.1 the potential gives the particle lattice a shear modulus of
+    /// 1.88 σ/l0 — about 14 σ/R for a 12³ drop — and drops do not flow; at 4.2 it is
+    /// 0.06 σ/l0 and the cube drop oscillates within 6 % of Lamb's period at 15³.
+    #[serde(default = "default_re_over_l0")]
+    pub re_over_l0: f64,
+    /// Artificial speed of sound `c` [m/s], the same for all phases (Tait EOS, Eq. 14).
+    pub sound_speed: f64,
+    /// Which mass a particle carries. Default `physical` (`ρ0 l0³`); `lattice` is physics.md
+    /// §1's calibrated `ρ0 / Σ_j W_ij`, lighter by the kernel's lattice-sum excess.
+    #[serde(default)]
+    pub particle_mass: ParticleMass,
+    /// Verlet skin of the neighbour lists over spacing [-]: lists hold pairs up to the cut-off
+    /// plus this skin and are rebuilt when a particle has moved half of it. Default 0.2.
+    #[serde(default = "default_skin_over_l0")]
+    pub neighbour_skin_over_l0: f64,
+}
+
+/// Particle mass model. In both, the density summation is calibrated so that the undisturbed
+/// lattice has exactly `ρ0`.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum ParticleMass {
+    /// `m = ρ0 l0³`: the body's mass and weight equal ρ0 times its lattice volume.
+    #[default]
+    Physical,
+    /// `m = ρ0 / Σ_j W_ij` over the bulk lattice (physics.md §1).
+    Lattice,
+}
+
+fn default_h_over_l0() -> f64 {
+    1.05
+}
+fn default_re_over_l0() -> f64 {
+    4.2
+}
+fn default_skin_over_l0() -> f64 {
+    0.2
+}
+
+/// End time, outputs and time-step control.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct TimeControl {
+    /// Simulated end time [s].
+    pub end: f64,
+    /// Interval between two outputs (time-series rows) [s].
+    pub output_interval: f64,
+    /// Fixed time step [s]. Omit for the adaptive step (minimum over the active constraints).
+    #[serde(default)]
+    pub dt: Option<f64>,
+    /// Safety factors of the time-step constraints (physics.md §3).
+    #[serde(default)]
+    pub factors: StepFactors,
+    /// Largest number of steps the run may take; a scene needing more is refused before it
+    /// starts. Default 10 000 000.
+    #[serde(default = "default_max_steps")]
+    pub max_steps: u64,
+}
+
+fn default_max_steps() -> u64 {
+    10_000_000
+}
+
+/// Safety factors of the time-step constraints (physics.md §3).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct StepFactors {
+    /// CFL: `dt ≤ cfl · h/(c + |v|max)`. Default 0.25.
+    #[serde(default = "f_025")]
+    pub cfl: f64,
+    /// Viscous: `dt ≤ viscous · ρ h²/μ`. Default 0.125.
+    #[serde(default = "f_0125")]
+    pub viscous: f64,
+    /// Capillary: `dt ≤ capillary · √(ρ h³/(2π σ))`. Default 0.25.
+    #[serde(default = "f_025")]
+    pub capillary: f64,
+    /// Body force: `dt ≤ force · √(h/|a|max)`. Default 0.25.
+    #[serde(default = "f_025")]
+    pub force: f64,
+}
+
+fn f_025() -> f64 {
+    0.25
+}
+fn f_0125() -> f64 {
+    0.125
+}
+
+impl Default for StepFactors {
+    fn default() -> Self {
+        Self {
+            cfl: 0.25,
+            viscous: 0.125,
+            capillary: 0.25,
+            force: 0.25,
+        }
+    }
+}
+
+/// The physical effects a scene asks for. Walls and wetting are built when the scene has
+/// `[[wall]]` entries; wetting additionally needs `interfacial_tension`.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Effects {
+    /// Gravitational acceleration vector [m/s²]. Omit for none.
+    #[serde(default)]
+    pub gravity: Option<[f64; 3]>,
+    /// Laminar viscosity (Hu & Adams 2006 form, Eq. 11 of Natsui 2021).
+    #[serde(default)]
+    pub laminar_viscosity: bool,
+    /// Monaghan artificial viscosity (Eq. 12–13 of Natsui 2021). Omit for none.
+    #[serde(default)]
+    pub artificial_viscosity: Option<ArtificialViscosity>,
+    /// Surface and interfacial tension by the pairwise potential (Eq. 15, Natsui 2021) with
+    /// Fowkes pair strengths; also wetting of walls.
+    #[serde(default)]
+    pub interfacial_tension: bool,
+}
+
+/// Coefficients of Monaghan's artificial viscosity.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ArtificialViscosity {
+    /// Linear coefficient α1 [-]. Default 0.01 (Natsui 2021).
+    #[serde(default = "f_001")]
+    pub alpha1: f64,
+    /// Quadratic coefficient α2 [-]. Default 0.01 (Natsui 2021).
+    #[serde(default = "f_001")]
+    pub alpha2: f64,
+}
+
+fn f_001() -> f64 {
+    0.01
+}
+
+/// Density computation.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DensityControl {
+    /// `summation` (number density, default) or `continuity`.
+    #[serde(default)]
+    pub scheme: DensityScheme,
+    /// Periodic re-initialisation of the continuity density: `none` (default), `shepard` or
+    /// `mls` (Colagrossi & Landrini 2003). Only with `scheme = "continuity"`.
+    #[serde(default)]
+    pub reinit: Reinit,
+    /// Steps between two re-initialisations. Default 20.
+    #[serde(default = "default_reinit_every")]
+    pub reinit_every: u32,
+    /// What the EOS does with a density below ρ0: `clip` (default) sets the pressure to zero,
+    /// `keep` uses Tait's negative pressure. Cohesion comes from the interparticle potential;
+    /// tension from a deficient free-surface density would add an uncontrolled surface tension
+    /// (physics.md §2). Measured on the cube drop (15³, r_e = 4.2 l0): clipped, the kinetic
+    /// energy peaks at 0.25 µJ of the 0.47 µJ the cube-to-sphere change releases; kept, at
+    /// 2 µJ, drawn from the spurious surface tension.
+    #[serde(default)]
+    pub negative_pressure: NegativePressure,
+}
+
+/// Treatment of negative pressure in the equation of state.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum NegativePressure {
+    /// `p = max(p_Tait, 0)`.
+    #[default]
+    Clip,
+    /// Tait's pressure as is, tension included.
+    Keep,
+}
+
+fn default_reinit_every() -> u32 {
+    20
+}
+
+impl Default for DensityControl {
+    fn default() -> Self {
+        Self {
+            scheme: DensityScheme::Summation,
+            reinit: Reinit::None,
+            reinit_every: default_reinit_every(),
+            negative_pressure: NegativePressure::Clip,
+        }
+    }
+}
+
+/// How the density of a particle is obtained.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum DensityScheme {
+    /// `ρ_i = ρ0_i Σ_j W_ij / Σ_lattice W` (number density calibrated on the lattice).
+    #[default]
+    Summation,
+    /// `dρ_i/dt = ρ_i Σ_j V_j v_ij·∇_i W_ij`.
+    Continuity,
+}
+
+/// Density re-initialisation filter.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Reinit {
+    /// No re-initialisation.
+    #[default]
+    None,
+    /// Zeroth-order Shepard filter.
+    Shepard,
+    /// First-order moving-least-squares filter.
+    Mls,
+}
+
+/// A liquid phase.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Liquid {
+    /// Unique name.
+    pub name: String,
+    /// Reference density ρ0 [kg/m³].
+    pub density: f64,
+    /// Dynamic viscosity μ [Pa·s].
+    pub viscosity: f64,
+    /// Surface tension σ against the gas [N/m]. Required with interfacial tension.
+    #[serde(default)]
+    pub surface_tension: Option<f64>,
+}
+
+/// A solid material.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Solid {
+    /// Unique name.
+    pub name: String,
+    /// Equilibrium contact angle of each liquid on this solid [degrees, measured inside the
+    /// liquid], keyed by liquid name.
+    #[serde(default)]
+    pub contact_angles: BTreeMap<String, f64>,
+}
+
+/// The interfacial tension between two liquids.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Interface {
+    /// The two liquids' names.
+    pub liquids: [String; 2],
+    /// Interfacial tension σ_ab [N/m].
+    pub tension: f64,
+}
+
+/// A liquid body: a shape filled with one liquid, or cut by a plane into two liquids.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Body {
+    /// Unique name (used in error messages).
+    pub name: String,
+    /// The liquid filling the shape (omit when `cut` is given).
+    #[serde(default)]
+    pub liquid: Option<String>,
+    /// The region occupied.
+    pub shape: BodyShape,
+    /// A plane dividing the body into two liquids (instead of `liquid`).
+    #[serde(default)]
+    pub cut: Option<Cut>,
+    /// Initial velocity [m/s].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+}
+
+/// A fixed solid wall.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Wall {
+    /// Unique name (used in error messages).
+    pub name: String,
+    /// The solid material.
+    pub solid: String,
+    /// The wall's geometry.
+    pub shape: WallShape,
+    /// Number of particle layers. Default: the fewest that make the wall at least as thick
+    /// as both the kernel support and the potential cut-off `r_e`.
+    #[serde(default)]
+    pub layers: Option<u32>,
+    /// Tangential boundary condition: `free_slip` (default) or `no_slip`.
+    #[serde(default)]
+    pub boundary: WallBoundary,
+}
+
+/// Tangential condition at a wall.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum WallBoundary {
+    /// Walls take no part in the viscous terms.
+    #[default]
+    FreeSlip,
+    /// Wall particles carry the negative of the kernel-averaged fluid velocity (Adami 2012).
+    NoSlip,
+}
+
+impl Scene {
+    /// Parses and validates a scene from TOML text.
+    pub fn from_toml_str(text: &str) -> Result<Scene, SceneError> {
+        let scene: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// Checks every value and every cross-reference; the first problem found is returned.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        validate::validate(self)
+    }
+
+    /// Smoothing length `h` [m].
+    pub fn h(&self) -> f64 {
+        self.discretisation.h_over_l0 * self.discretisation.l0
+    }
+
+    /// Potential cut-off `r_e` [m].
+    pub fn r_e(&self) -> f64 {
+        self.discretisation.re_over_l0 * self.discretisation.l0
+    }
+
+    /// Kernel support radius [m].
+    pub fn kernel_support(&self) -> f64 {
+        self.discretisation.kernel.support_over_h() * self.h()
+    }
+
+    /// The number of wall layers used for `wall`: its own, or the fewest that cover both the
+    /// kernel support and `r_e`.
+    pub fn wall_layers(&self, wall: &Wall) -> u32 {
+        wall.layers.unwrap_or_else(|| {
+            let needed = self.kernel_support().max(self.r_e()) / self.discretisation.l0;
+            // a tolerance of 1e-9 keeps e.g. 3.0000000000000004 from becoming 4 layers
+            (needed - 1e-9).ceil().max(1.0) as u32
+        })
+    }
+
+    /// Index of a liquid by name.
+    pub fn liquid_index(&self, name: &str) -> Option<usize> {
+        self.liquids.iter().position(|l| l.name == name)
+    }
+
+    /// Index of a solid by name.
+    pub fn solid_index(&self, name: &str) -> Option<usize> {
+        self.solids.iter().position(|s| s.name == name)
+    }
+
+    /// The interfacial tension between two different liquids [N/m], if given.
+    pub fn interface_tension(&self, a: &str, b: &str) -> Option<f64> {
+        self.interfaces
+            .iter()
+            .find(|i| {
+                (i.liquids[0] == a && i.liquids[1] == b) || (i.liquids[0] == b && i.liquids[1] == a)
+            })
+            .map(|i| i.tension)
+    }
+}

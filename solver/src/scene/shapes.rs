@@ -1,0 +1,368 @@
+//! Geometric primitives of bodies and walls, and the lattice sites they occupy.
+
+use serde::{Deserialize, Serialize};
+
+/// The region a liquid body occupies.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum BodyShape {
+    /// Ball of `radius` [m] around `center` [m].
+    Sphere {
+        /// Centre [m].
+        center: [f64; 3],
+        /// Radius [m].
+        radius: f64,
+    },
+    /// Axis-aligned ellipsoid.
+    Ellipsoid {
+        /// Centre [m].
+        center: [f64; 3],
+        /// Semi-axes along x, y, z [m].
+        semi_axes: [f64; 3],
+    },
+    /// Axis-aligned box `min ≤ x < max`.
+    Box {
+        /// Lower corner [m].
+        min: [f64; 3],
+        /// Upper corner [m].
+        max: [f64; 3],
+    },
+    /// Half ball: the flat face passes through `center`, the dome points along `pole`.
+    Hemisphere {
+        /// Centre of the flat face [m].
+        center: [f64; 3],
+        /// Radius [m].
+        radius: f64,
+        /// Direction from the flat face to the top of the dome (need not be unit) [-].
+        pole: [f64; 3],
+    },
+}
+
+/// A plane dividing a body into two liquids: sites with `(x − point)·normal < 0` take
+/// `liquids[0]`, the others `liquids[1]`.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Cut {
+    /// A point of the plane [m].
+    pub point: [f64; 3],
+    /// Normal of the plane, pointing into `liquids[1]` (need not be unit) [-].
+    pub normal: [f64; 3],
+    /// The liquid on the negative side, then the one on the positive side.
+    pub liquids: [String; 2],
+}
+
+/// The geometry of a fixed wall. Walls are axis-aligned (incline a plate by rotating gravity).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum WallShape {
+    /// Horizontal circular plate whose top surface is the plane `z = center[2]`.
+    Disk {
+        /// Centre of the top surface [m]; `center[2]` must be a multiple of `l0`.
+        center: [f64; 3],
+        /// Radius [m].
+        radius: f64,
+    },
+    /// Horizontal rectangular plate whose top surface is the plane `z = top`.
+    Plate {
+        /// Lower x, y corner [m].
+        min: [f64; 2],
+        /// Upper x, y corner [m].
+        max: [f64; 2],
+        /// Height of the top surface [m], a multiple of `l0`.
+        top: f64,
+    },
+    /// A container enclosing the inner region `[min, max]` (bounds multiples of `l0`).
+    Box {
+        /// Lower inner corner [m].
+        min: [f64; 3],
+        /// Upper inner corner [m].
+        max: [f64; 3],
+        /// Leave the top (+z) side open.
+        #[serde(default)]
+        open_top: bool,
+    },
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Lattice index range `i` whose sites `(i + ½) l0` can lie in `[lo, hi]`.
+fn index_range(lo: f64, hi: f64, l0: f64) -> std::ops::RangeInclusive<i64> {
+    ((lo / l0 - 0.5).floor() as i64 - 1)..=((hi / l0 - 0.5).ceil() as i64 + 1)
+}
+
+/// Calls `f` for every lattice site `(i + ½) l0` in the axis-aligned box `[lo, hi]`, in a fixed
+/// order (x fastest).
+pub(crate) fn for_sites_in_box(
+    lo: [f64; 3],
+    hi: [f64; 3],
+    l0: f64,
+    mut f: impl FnMut([i64; 3], [f64; 3]),
+) {
+    for k in index_range(lo[2], hi[2], l0) {
+        for j in index_range(lo[1], hi[1], l0) {
+            for i in index_range(lo[0], hi[0], l0) {
+                let p = [
+                    (i as f64 + 0.5) * l0,
+                    (j as f64 + 0.5) * l0,
+                    (k as f64 + 0.5) * l0,
+                ];
+                f([i, j, k], p);
+            }
+        }
+    }
+}
+
+impl BodyShape {
+    /// Axis-aligned bounding box `(lo, hi)` [m].
+    pub fn bounds(&self) -> ([f64; 3], [f64; 3]) {
+        match *self {
+            BodyShape::Sphere {
+                center: c,
+                radius: r,
+            }
+            | BodyShape::Hemisphere {
+                center: c,
+                radius: r,
+                ..
+            } => (
+                [c[0] - r, c[1] - r, c[2] - r],
+                [c[0] + r, c[1] + r, c[2] + r],
+            ),
+            BodyShape::Ellipsoid {
+                center: c,
+                semi_axes: a,
+            } => (
+                [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                [c[0] + a[0], c[1] + a[1], c[2] + a[2]],
+            ),
+            BodyShape::Box { min, max } => (min, max),
+        }
+    }
+
+    /// Whether the point `p` [m] lies inside the shape.
+    pub fn contains(&self, p: [f64; 3]) -> bool {
+        match *self {
+            BodyShape::Sphere { center, radius } => {
+                let d = sub(p, center);
+                dot(d, d) < radius * radius
+            }
+            BodyShape::Ellipsoid { center, semi_axes } => {
+                let d = sub(p, center);
+                (0..3).map(|k| (d[k] / semi_axes[k]).powi(2)).sum::<f64>() < 1.0
+            }
+            BodyShape::Box { min, max } => (0..3).all(|k| p[k] >= min[k] && p[k] < max[k]),
+            BodyShape::Hemisphere {
+                center,
+                radius,
+                pole,
+            } => {
+                let d = sub(p, center);
+                dot(d, d) < radius * radius && dot(d, pole) >= 0.0
+            }
+        }
+    }
+
+    /// The shape's parameters that must be positive or finite, as `(field, value, ok)`.
+    pub(crate) fn checks(&self) -> Vec<(&'static str, String, bool)> {
+        let finite3 = |v: [f64; 3]| v.iter().all(|x| x.is_finite());
+        match *self {
+            BodyShape::Sphere { center, radius } => vec![
+                ("center", format!("{center:?}"), finite3(center)),
+                (
+                    "radius",
+                    format!("{radius}"),
+                    radius.is_finite() && radius > 0.0,
+                ),
+            ],
+            BodyShape::Ellipsoid { center, semi_axes } => vec![
+                ("center", format!("{center:?}"), finite3(center)),
+                (
+                    "semi_axes",
+                    format!("{semi_axes:?}"),
+                    finite3(semi_axes) && semi_axes.iter().all(|&a| a > 0.0),
+                ),
+            ],
+            BodyShape::Box { min, max } => vec![
+                ("min", format!("{min:?}"), finite3(min)),
+                (
+                    "max",
+                    format!("{max:?}"),
+                    finite3(max) && (0..3).all(|k| max[k] > min[k]),
+                ),
+            ],
+            BodyShape::Hemisphere {
+                center,
+                radius,
+                pole,
+            } => vec![
+                ("center", format!("{center:?}"), finite3(center)),
+                (
+                    "radius",
+                    format!("{radius}"),
+                    radius.is_finite() && radius > 0.0,
+                ),
+                (
+                    "pole",
+                    format!("{pole:?}"),
+                    finite3(pole) && dot(pole, pole) > 0.0,
+                ),
+            ],
+        }
+    }
+}
+
+impl Cut {
+    /// Index (0 or 1) into `liquids` of the side `p` [m] lies on.
+    pub fn side(&self, p: [f64; 3]) -> usize {
+        usize::from(dot(sub(p, self.point), self.normal) >= 0.0)
+    }
+}
+
+/// Whether `x` [m] is an integer multiple of `l0` [m] (to 1e-6 of `l0`).
+pub(crate) fn on_lattice_plane(x: f64, l0: f64) -> bool {
+    let n = x / l0;
+    (n - n.round()).abs() < 1e-6
+}
+
+impl WallShape {
+    /// The lattice sites of a wall with `layers` layers, in a fixed order, given to `f`.
+    pub(crate) fn for_sites(&self, l0: f64, layers: u32, mut f: impl FnMut([i64; 3], [f64; 3])) {
+        let t = layers as f64 * l0;
+        match *self {
+            WallShape::Disk { center, radius } => {
+                let lo = [center[0] - radius, center[1] - radius, center[2] - t];
+                let hi = [center[0] + radius, center[1] + radius, center[2]];
+                for_sites_in_box(lo, hi, l0, |idx, p| {
+                    let (dx, dy) = (p[0] - center[0], p[1] - center[1]);
+                    if dx * dx + dy * dy <= radius * radius
+                        && p[2] < center[2]
+                        && p[2] > center[2] - t
+                    {
+                        f(idx, p)
+                    }
+                });
+            }
+            WallShape::Plate { min, max, top } => {
+                let lo = [min[0], min[1], top - t];
+                let hi = [max[0], max[1], top];
+                for_sites_in_box(lo, hi, l0, |idx, p| {
+                    if p[0] >= min[0]
+                        && p[0] < max[0]
+                        && p[1] >= min[1]
+                        && p[1] < max[1]
+                        && p[2] < top
+                        && p[2] > top - t
+                    {
+                        f(idx, p)
+                    }
+                });
+            }
+            WallShape::Box { min, max, open_top } => {
+                let lo = [min[0] - t, min[1] - t, min[2] - t];
+                let hi = [
+                    max[0] + t,
+                    max[1] + t,
+                    if open_top { max[2] } else { max[2] + t },
+                ];
+                for_sites_in_box(lo, hi, l0, |idx, p| {
+                    let in_outer = (0..3).all(|k| p[k] > lo[k] && p[k] < hi[k]);
+                    let in_inner = (0..3).all(|k| p[k] > min[k] && p[k] < max[k]);
+                    if in_outer && !in_inner {
+                        f(idx, p)
+                    }
+                });
+            }
+        }
+    }
+
+    /// Whether the point `p` [m] lies inside the solid material of a wall `thickness_m` thick,
+    /// by more than `margin_m` [m] from every face. Wall particles sit on lattice sites, so a
+    /// liquid particle in compressed contact may come a fraction of a spacing past the ideal
+    /// surface; a margin of `l0/2` — the plane of the outer wall layer's centres — separates
+    /// that from a particle that has entered the wall.
+    pub fn solid_contains(&self, p: [f64; 3], thickness_m: f64, margin_m: f64) -> bool {
+        let m = margin_m;
+        match *self {
+            WallShape::Disk { center, radius } => {
+                let (dx, dy) = (p[0] - center[0], p[1] - center[1]);
+                let r = radius - m;
+                r > 0.0
+                    && dx * dx + dy * dy <= r * r
+                    && p[2] < center[2] - m
+                    && p[2] > center[2] - thickness_m + m
+            }
+            WallShape::Plate { min, max, top } => {
+                p[0] >= min[0] + m
+                    && p[0] < max[0] - m
+                    && p[1] >= min[1] + m
+                    && p[1] < max[1] - m
+                    && p[2] < top - m
+                    && p[2] > top - thickness_m + m
+            }
+            WallShape::Box { min, max, open_top } => {
+                let t = thickness_m;
+                let hi_z = if open_top { max[2] } else { max[2] + t - m };
+                let in_outer = (0..2).all(|k| p[k] > min[k] - t + m && p[k] < max[k] + t - m)
+                    && p[2] > min[2] - t + m
+                    && p[2] < hi_z;
+                let in_inner = (0..2).all(|k| p[k] > min[k] - m && p[k] < max[k] + m)
+                    && p[2] > min[2] - m
+                    && (open_top || p[2] < max[2] + m);
+                in_outer && !in_inner
+            }
+        }
+    }
+
+    /// The planes that must be lattice planes, as `(field, value)`.
+    pub(crate) fn lattice_planes(&self) -> Vec<(&'static str, f64)> {
+        match *self {
+            WallShape::Disk { center, .. } => vec![("center[2]", center[2])],
+            WallShape::Plate { top, .. } => vec![("top", top)],
+            WallShape::Box { min, max, .. } => vec![
+                ("min[0]", min[0]),
+                ("min[1]", min[1]),
+                ("min[2]", min[2]),
+                ("max[0]", max[0]),
+                ("max[1]", max[1]),
+                ("max[2]", max[2]),
+            ],
+        }
+    }
+
+    /// The shape's parameters that must be positive or finite, as `(field, value, ok)`.
+    pub(crate) fn checks(&self) -> Vec<(&'static str, String, bool)> {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        match *self {
+            WallShape::Disk { center, radius } => vec![
+                ("center", format!("{center:?}"), finite(&center)),
+                (
+                    "radius",
+                    format!("{radius}"),
+                    radius.is_finite() && radius > 0.0,
+                ),
+            ],
+            WallShape::Plate { min, max, top } => vec![
+                ("min", format!("{min:?}"), finite(&min)),
+                (
+                    "max",
+                    format!("{max:?}"),
+                    finite(&max) && max[0] > min[0] && max[1] > min[1],
+                ),
+                ("top", format!("{top}"), top.is_finite()),
+            ],
+            WallShape::Box { min, max, .. } => vec![
+                ("min", format!("{min:?}"), finite(&min)),
+                (
+                    "max",
+                    format!("{max:?}"),
+                    finite(&max) && (0..3).all(|k| max[k] > min[k]),
+                ),
+            ],
+        }
+    }
+}

@@ -1,0 +1,433 @@
+//! Validation of a parsed scene: ranges of every value and consistency of the references.
+//! Checks that need the particles (counts, overlaps) and the time-step limits are made when the
+//! simulation is built ([`crate::Simulation::new`]).
+
+use super::{shapes::on_lattice_plane, DensityScheme, Reinit, Scene, SceneError};
+use std::collections::BTreeSet;
+
+type R = Result<(), SceneError>;
+
+fn positive(field: &str, v: f64, what: &str) -> R {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
+            field,
+            v,
+            format!("{what} must be a positive finite number"),
+        ))
+    }
+}
+
+fn non_negative(field: &str, v: f64, what: &str) -> R {
+    if v.is_finite() && v >= 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
+            field,
+            v,
+            format!("{what} must be zero or positive and finite"),
+        ))
+    }
+}
+
+fn in_range(field: &str, v: f64, lo: f64, hi: f64, what: &str) -> R {
+    if v.is_finite() && v > lo && v <= hi {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
+            field,
+            v,
+            format!("{what} must lie in ({lo}, {hi}]"),
+        ))
+    }
+}
+
+fn unique_name(field: &str, name: &str, seen: &mut BTreeSet<String>) -> R {
+    if name.trim().is_empty() {
+        return Err(SceneError::invalid(
+            field,
+            "\"\"",
+            "names must not be empty",
+        ));
+    }
+    if !seen.insert(name.to_string()) {
+        return Err(SceneError::invalid(field, name, "this name is used twice"));
+    }
+    Ok(())
+}
+
+pub(super) fn validate(s: &Scene) -> R {
+    discretisation(s)?;
+    time(s)?;
+    effects(s)?;
+    materials(s)?;
+    bodies(s)?;
+    walls(s)?;
+    tension_inputs(s)
+}
+
+fn discretisation(s: &Scene) -> R {
+    let d = &s.discretisation;
+    positive("discretisation.l0", d.l0, "the particle spacing l0 [m]")?;
+    // Support 2h ≤ l0 would leave a particle without neighbours; beyond h = 6 l0 a particle
+    // has tens of thousands of neighbours — certainly a typo.
+    in_range("discretisation.h_over_l0", d.h_over_l0, 0.5, 6.0, "h/l0")?;
+    // The potential is repulsive below l0 and attractive up to r_e: r_e must exceed l0.
+    in_range(
+        "discretisation.re_over_l0",
+        d.re_over_l0,
+        1.0,
+        10.0,
+        "r_e/l0",
+    )?;
+    positive(
+        "discretisation.sound_speed",
+        d.sound_speed,
+        "the sound speed c [m/s]",
+    )?;
+    if !(d.neighbour_skin_over_l0.is_finite() && (0.0..=2.0).contains(&d.neighbour_skin_over_l0)) {
+        return Err(SceneError::invalid(
+            "discretisation.neighbour_skin_over_l0",
+            d.neighbour_skin_over_l0,
+            "the neighbour-list skin must lie in [0, 2] (in units of l0)",
+        ));
+    }
+    Ok(())
+}
+
+fn time(s: &Scene) -> R {
+    let t = &s.time;
+    positive("time.end", t.end, "the end time [s]")?;
+    positive(
+        "time.output_interval",
+        t.output_interval,
+        "the output interval [s]",
+    )?;
+    if t.output_interval > t.end {
+        return Err(SceneError::invalid(
+            "time.output_interval",
+            t.output_interval,
+            format!("the output interval exceeds time.end = {} s", t.end),
+        ));
+    }
+    if let Some(dt) = t.dt {
+        positive("time.dt", dt, "a fixed time step [s]")?;
+    }
+    if t.max_steps == 0 {
+        return Err(SceneError::invalid(
+            "time.max_steps",
+            0,
+            "must be at least 1",
+        ));
+    }
+    let f = &t.factors;
+    in_range("time.factors.cfl", f.cfl, 0.0, 1.0, "a safety factor")?;
+    in_range(
+        "time.factors.viscous",
+        f.viscous,
+        0.0,
+        1.0,
+        "a safety factor",
+    )?;
+    in_range(
+        "time.factors.capillary",
+        f.capillary,
+        0.0,
+        1.0,
+        "a safety factor",
+    )?;
+    in_range("time.factors.force", f.force, 0.0, 1.0, "a safety factor")
+}
+
+fn effects(s: &Scene) -> R {
+    let e = &s.effects;
+    if let Some(g) = e.gravity {
+        if !g.iter().all(|x| x.is_finite()) {
+            return Err(SceneError::invalid(
+                "effects.gravity",
+                format!("{g:?}"),
+                "must be finite [m/s²]",
+            ));
+        }
+    }
+    if let Some(av) = &e.artificial_viscosity {
+        non_negative("effects.artificial_viscosity.alpha1", av.alpha1, "α1")?;
+        non_negative("effects.artificial_viscosity.alpha2", av.alpha2, "α2")?;
+    }
+    let d = &s.density;
+    if d.scheme == DensityScheme::Summation && d.reinit != Reinit::None {
+        return Err(SceneError::invalid(
+            "density.reinit",
+            format!("{:?}", d.reinit).to_lowercase(),
+            "re-initialisation applies only to density.scheme = \"continuity\"",
+        ));
+    }
+    if d.reinit_every == 0 {
+        return Err(SceneError::invalid(
+            "density.reinit_every",
+            0,
+            "must be at least 1 step",
+        ));
+    }
+    Ok(())
+}
+
+fn materials(s: &Scene) -> R {
+    if s.liquids.is_empty() {
+        return Err(SceneError::invalid(
+            "liquid",
+            "[]",
+            "a scene needs at least one [[liquid]]",
+        ));
+    }
+    let mut names = BTreeSet::new();
+    for l in &s.liquids {
+        unique_name(&format!("liquid[{}].name", l.name), &l.name, &mut names)?;
+        let f = |k: &str| format!("liquid[{}].{k}", l.name);
+        positive(&f("density"), l.density, "the density ρ0 [kg/m³]")?;
+        non_negative(&f("viscosity"), l.viscosity, "the viscosity μ [Pa·s]")?;
+        if let Some(sigma) = l.surface_tension {
+            positive(&f("surface_tension"), sigma, "the surface tension σ [N/m]")?;
+        }
+    }
+    for so in &s.solids {
+        unique_name(&format!("solid[{}].name", so.name), &so.name, &mut names)?;
+        for (liquid, &angle) in &so.contact_angles {
+            let field = format!("solid[{}].contact_angles.{liquid}", so.name);
+            if s.liquid_index(liquid).is_none() {
+                return Err(SceneError::invalid(
+                    field,
+                    liquid,
+                    "no [[liquid]] has this name",
+                ));
+            }
+            if !(angle.is_finite() && angle > 0.0 && angle < 180.0) {
+                return Err(SceneError::invalid(
+                    field,
+                    angle,
+                    "a contact angle must lie strictly between 0 and 180 degrees",
+                ));
+            }
+        }
+    }
+    let mut pairs = BTreeSet::new();
+    for (n, i) in s.interfaces.iter().enumerate() {
+        let field = format!("interface[{n}]");
+        for name in &i.liquids {
+            if s.liquid_index(name).is_none() {
+                return Err(SceneError::invalid(
+                    format!("{field}.liquids"),
+                    name,
+                    "no [[liquid]] has this name",
+                ));
+            }
+        }
+        if i.liquids[0] == i.liquids[1] {
+            return Err(SceneError::invalid(
+                format!("{field}.liquids"),
+                format!("{:?}", i.liquids),
+                "an interface joins two different liquids",
+            ));
+        }
+        positive(
+            &format!("{field}.tension"),
+            i.tension,
+            "the interfacial tension σ_ab [N/m]",
+        )?;
+        let mut key = i.liquids.clone();
+        key.sort();
+        if !pairs.insert(key) {
+            return Err(SceneError::invalid(
+                format!("{field}.liquids"),
+                format!("{:?}", i.liquids),
+                "this pair of liquids has two [[interface]] entries",
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn check_shape(prefix: &str, checks: Vec<(&'static str, String, bool)>) -> R {
+    for (field, value, ok) in checks {
+        if !ok {
+            return Err(SceneError::invalid(
+                format!("{prefix}.shape.{field}"),
+                value,
+                "must be finite, with positive sizes (and max > min)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn bodies(s: &Scene) -> R {
+    if s.bodies.is_empty() {
+        return Err(SceneError::invalid(
+            "body",
+            "[]",
+            "a scene needs at least one [[body]]",
+        ));
+    }
+    let mut names = BTreeSet::new();
+    for b in &s.bodies {
+        let p = format!("body[{}]", b.name);
+        unique_name(&format!("{p}.name"), &b.name, &mut names)?;
+        match (&b.liquid, &b.cut) {
+            (Some(l), None) => {
+                if s.liquid_index(l).is_none() {
+                    return Err(SceneError::invalid(
+                        format!("{p}.liquid"),
+                        l,
+                        "no [[liquid]] has this name",
+                    ));
+                }
+            }
+            (None, Some(cut)) => {
+                for l in &cut.liquids {
+                    if s.liquid_index(l).is_none() {
+                        return Err(SceneError::invalid(
+                            format!("{p}.cut.liquids"),
+                            l,
+                            "no [[liquid]] has this name",
+                        ));
+                    }
+                }
+                let n = cut.normal;
+                if !(n.iter().all(|x| x.is_finite()) && n.iter().any(|&x| x != 0.0)) {
+                    return Err(SceneError::invalid(
+                        format!("{p}.cut.normal"),
+                        format!("{n:?}"),
+                        "must be a finite non-zero vector",
+                    ));
+                }
+                if !cut.point.iter().all(|x| x.is_finite()) {
+                    return Err(SceneError::invalid(
+                        format!("{p}.cut.point"),
+                        format!("{:?}", cut.point),
+                        "must be finite [m]",
+                    ));
+                }
+            }
+            (Some(_), Some(_)) => {
+                return Err(SceneError::invalid(
+                    p,
+                    "liquid and cut",
+                    "give either `liquid` or `cut`, not both",
+                ));
+            }
+            (None, None) => {
+                return Err(SceneError::invalid(
+                    p,
+                    "neither liquid nor cut",
+                    "give the body's `liquid` (or a `cut` into two liquids)",
+                ));
+            }
+        }
+        check_shape(&p, b.shape.checks())?;
+        if !b.velocity.iter().all(|x| x.is_finite()) {
+            return Err(SceneError::invalid(
+                format!("{p}.velocity"),
+                format!("{:?}", b.velocity),
+                "must be finite [m/s]",
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn walls(s: &Scene) -> R {
+    let mut names: BTreeSet<String> = s.bodies.iter().map(|b| b.name.clone()).collect();
+    let l0 = s.discretisation.l0;
+    for w in &s.walls {
+        let p = format!("wall[{}]", w.name);
+        unique_name(&format!("{p}.name"), &w.name, &mut names)?;
+        if s.solid_index(&w.solid).is_none() {
+            return Err(SceneError::invalid(
+                format!("{p}.solid"),
+                &w.solid,
+                "no [[solid]] has this name",
+            ));
+        }
+        check_shape(&p, w.shape.checks())?;
+        for (field, x) in w.shape.lattice_planes() {
+            if !on_lattice_plane(x, l0) {
+                return Err(SceneError::invalid(
+                    format!("{p}.shape.{field}"),
+                    x,
+                    format!("wall surfaces must lie on lattice planes: a multiple of l0 = {l0} m"),
+                ));
+            }
+        }
+        let needed = s.kernel_support().max(s.r_e());
+        if let Some(layers) = w.layers {
+            if layers == 0 || (layers as f64) * l0 < needed * (1.0 - 1e-9) {
+                return Err(SceneError::invalid(
+                    format!("{p}.layers"),
+                    layers,
+                    format!(
+                        "a wall must be at least as thick as the kernel support and the potential \
+                         cut-off ({needed:e} m = {:.2} l0), or density and wetting come out wrong",
+                        needed / l0
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// With interfacial tension on, every liquid needs σ, every pair of liquids present needs σ_ab,
+/// every liquid needs a contact angle on every solid that a wall is made of.
+fn tension_inputs(s: &Scene) -> R {
+    if !s.effects.interfacial_tension {
+        return Ok(());
+    }
+    let mut used: BTreeSet<&str> = BTreeSet::new();
+    for b in &s.bodies {
+        if let Some(l) = &b.liquid {
+            used.insert(l);
+        }
+        if let Some(c) = &b.cut {
+            used.insert(&c.liquids[0]);
+            used.insert(&c.liquids[1]);
+        }
+    }
+    for l in &s.liquids {
+        if l.surface_tension.is_none() {
+            return Err(SceneError::invalid(
+                format!("liquid[{}].surface_tension", l.name),
+                "missing",
+                "effects.interfacial_tension needs every liquid's surface tension [N/m]",
+            ));
+        }
+    }
+    let used: Vec<&str> = used.into_iter().collect();
+    for (n, a) in used.iter().enumerate() {
+        for b in &used[n + 1..] {
+            if s.interface_tension(a, b).is_none() {
+                return Err(SceneError::invalid(
+                    "interface",
+                    format!("missing for liquids [\"{a}\", \"{b}\"]"),
+                    "these liquids can touch: add [[interface]] with their interfacial tension [N/m]",
+                ));
+            }
+        }
+    }
+    for w in &s.walls {
+        let solid = &s.solids[s.solid_index(&w.solid).expect("checked in walls()")];
+        for l in &used {
+            if !solid.contact_angles.contains_key(*l) {
+                return Err(SceneError::invalid(
+                    format!("solid[{}].contact_angles.{l}", solid.name),
+                    "missing",
+                    format!(
+                        "liquid '{l}' can touch wall '{}': give its contact angle [degrees]",
+                        w.name
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}

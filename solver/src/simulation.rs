@@ -1,0 +1,431 @@
+//! The time step: kick–drift–kick with an adaptive step.
+//!
+//! One step, from `(x_n, v_n, ρ_n, a_n)`:
+//! 1. choose `dt` (fixed, or the minimum over the active constraints, physics.md §3);
+//! 2. kick and drift: `v ← v + ½dt a`, `x ← x + dt v` (continuity: `ρ ← ρ + dt dρ/dt`, a
+//!    predictor);
+//! 3. rebuild the neighbour lists if a particle moved half the skin (re-sorting by cell);
+//! 4. density (summation), EOS, wall pressures, pair forces → `a_{n+1}` (velocities at the
+//!    half step enter the viscous terms);
+//! 5. kick: `v ← v + ½dt a_{n+1}` (continuity: trapezoidal corrector `ρ ← ρ + ½dt (D_{n+1} −
+//!    D_n)`), health check, and periodic density re-initialisation.
+
+use crate::error::SimError;
+use crate::kernel::Kernel;
+use crate::model::Model;
+use crate::neighbours::NeighbourSearch;
+use crate::observables::{observe, Observables};
+use crate::physics::{density, forces, walls};
+use crate::scene::{DensityScheme, NegativePressure, Reinit, Scene, SceneError};
+use crate::setup::{build_particles, Inventory};
+use crate::state::{Particles, Vec3};
+use crate::timestep::StepLimits;
+use crate::with_kernel;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
+
+/// Wall-clock time spent in each part of the step since the start [s].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct StepTimings {
+    /// Neighbour search (sorting and list building).
+    pub search_s: f64,
+    /// Density (summation or re-initialisation), EOS and wall pressures.
+    pub density_s: f64,
+    /// Pair forces.
+    pub forces_s: f64,
+    /// Kicks, drift and health checks.
+    pub integration_s: f64,
+}
+
+/// A running simulation.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    /// The resolved model.
+    pub model: Model,
+    /// The particles.
+    pub particles: Particles,
+    /// Neighbour search and lists.
+    pub search: NeighbourSearch,
+    /// Per wall particle: no-slip?
+    pub wall_no_slip: Vec<bool>,
+    /// Particles per body and wall.
+    pub inventory: Inventory,
+    /// Simulated time [s].
+    pub time_s: f64,
+    /// Steps taken.
+    pub step: u64,
+    /// Last time step [s].
+    pub last_dt_s: f64,
+    /// Time per part of the step.
+    pub timings: StepTimings,
+    max_speed2: f64,
+    max_acc2: f64,
+    drho_next: Vec<f64>,
+}
+
+impl Simulation {
+    /// Builds the particles of a scene, evaluates the initial forces and checks that the scene
+    /// can afford its time step.
+    pub fn new(scene: &Scene) -> Result<Simulation, SimError> {
+        scene.validate()?;
+        let model = Model::from_scene(scene)?;
+        let (particles, no_slip, inventory) = build_particles(scene, &model)?;
+        let far = if model.effects.interfacial_tension {
+            model.r_e_m
+        } else {
+            model.support_m
+        };
+        let skin = scene.discretisation.neighbour_skin_over_l0 * model.l0_m;
+        let search = NeighbourSearch::new(model.support_m, far, skin);
+        let n_fluid = particles.n_fluid;
+        let mut sim = Simulation {
+            model,
+            particles,
+            search,
+            wall_no_slip: no_slip,
+            inventory,
+            time_s: 0.0,
+            step: 0,
+            last_dt_s: 0.0,
+            timings: StepTimings::default(),
+            max_speed2: 0.0,
+            max_acc2: 0.0,
+            drho_next: vec![0.0; n_fluid],
+        };
+        sim.sort_walls()?;
+        sim.rebuild_neighbours()?;
+        with_kernel!(sim.model.kernel, K => sim.evaluate::<K>());
+        sim.health()?;
+        sim.check_affordable()?;
+        Ok(sim)
+    }
+
+    fn sort_walls(&mut self) -> Result<(), SimError> {
+        let nf = self.particles.n_fluid;
+        let perm = self
+            .search
+            .sort_order(&self.particles.pos[nf..])
+            .map_err(|source| SimError::Escaped { step: 0, source })?;
+        fn gather<T: Copy>(v: &mut [T], perm: &[u32]) {
+            let old = v.to_vec();
+            for (k, &p) in perm.iter().enumerate() {
+                v[k] = old[p as usize];
+            }
+        }
+        let p = &mut self.particles;
+        gather(&mut p.pos[nf..], &perm);
+        gather(&mut p.vel[nf..], &perm);
+        gather(&mut p.rho[nf..], &perm);
+        gather(&mut p.pressure[nf..], &perm);
+        gather(&mut p.vol[nf..], &perm);
+        gather(&mut p.phase[nf..], &perm);
+        gather(&mut p.id[nf..], &perm);
+        gather(&mut self.wall_no_slip, &perm);
+        Ok(())
+    }
+
+    /// Re-sorts the fluid particles by cell and rebuilds the neighbour lists.
+    fn rebuild_neighbours(&mut self) -> Result<(), SimError> {
+        let t0 = Instant::now();
+        let nf = self.particles.n_fluid;
+        let step = self.step;
+        let perm = self
+            .search
+            .sort_order(&self.particles.pos[..nf])
+            .map_err(|source| SimError::Escaped { step, source })?;
+        self.particles.permute_fluid(&perm);
+        self.particles
+            .x_ref
+            .copy_from_slice(&self.particles.pos[..nf]);
+        self.search
+            .build(&self.particles.pos, nf)
+            .map_err(|source| SimError::Escaped { step, source })?;
+        self.timings.search_s += t0.elapsed().as_secs_f64();
+        Ok(())
+    }
+
+    /// The time-step limits of the current state.
+    pub fn step_limits(&self) -> StepLimits {
+        let m = &self.model;
+        let f = &m.scene.time.factors;
+        let (viscous_s, capillary_s) = m.static_step_limits();
+        let a = self.max_acc2.sqrt();
+        StepLimits {
+            cfl_s: f.cfl * m.h_m / (m.c_m_s + self.max_speed2.sqrt()),
+            viscous_s,
+            capillary_s,
+            force_s: if a > 0.0 {
+                f.force * (m.h_m / a).sqrt()
+            } else {
+                f64::INFINITY
+            },
+        }
+    }
+
+    /// The step the next [`Simulation::step`] will take without a cap [s].
+    pub fn next_dt(&self) -> f64 {
+        self.model
+            .scene
+            .time
+            .dt
+            .unwrap_or_else(|| self.step_limits().min().0)
+    }
+
+    fn check_affordable(&self) -> Result<(), SimError> {
+        let t = &self.model.scene.time;
+        let (stable, which) = self.step_limits().min();
+        if let Some(dt) = t.dt {
+            if dt > stable {
+                return Err(SceneError::invalid(
+                    "time.dt",
+                    dt,
+                    format!(
+                        "the fixed step exceeds the {which} limit of {stable:e} s; use a step \
+                         at most that, or omit time.dt for the adaptive step"
+                    ),
+                )
+                .into());
+            }
+        }
+        let dt = t.dt.unwrap_or(stable);
+        let steps = t.end / dt;
+        if steps > t.max_steps as f64 {
+            return Err(SceneError::invalid(
+                "time.max_steps",
+                t.max_steps,
+                format!(
+                    "time.end = {:e} s at dt = {dt:e} s (set by the {which} limit) needs at least \
+                     {steps:.3e} steps; shorten the run, coarsen l0, or raise time.max_steps",
+                    t.end
+                ),
+            )
+            .into());
+        }
+        Ok(())
+    }
+
+    /// Advances one step, no longer than `max_dt_s` [s]; returns the step taken [s].
+    pub fn step(&mut self, max_dt_s: f64) -> Result<f64, SimError> {
+        with_kernel!(self.model.kernel, K => self.step_with::<K>(max_dt_s))
+    }
+
+    fn step_with<K: Kernel>(&mut self, max_dt_s: f64) -> Result<f64, SimError> {
+        let dt = self.next_dt().min(max_dt_s);
+        let half = 0.5 * dt;
+        let continuity = self.model.effects.density == DensityScheme::Continuity;
+        let t0 = Instant::now();
+        {
+            let p = &mut self.particles;
+            let nf = p.n_fluid;
+            p.vel[..nf]
+                .par_iter_mut()
+                .zip(p.pos[..nf].par_iter_mut())
+                .zip(p.acc.par_iter())
+                .for_each(|((v, x), a)| {
+                    *v += a * half;
+                    *x += *v * dt;
+                });
+            if continuity {
+                p.rho[..nf]
+                    .par_iter_mut()
+                    .zip(p.drho.par_iter())
+                    .for_each(|(r, d)| *r += dt * d);
+            }
+        }
+        self.timings.integration_s += t0.elapsed().as_secs_f64();
+
+        let nf = self.particles.n_fluid;
+        if self
+            .search
+            .needs_rebuild(&self.particles.pos[..nf], &self.particles.x_ref)
+        {
+            self.rebuild_neighbours()?;
+        }
+        self.evaluate::<K>();
+
+        let t0 = Instant::now();
+        {
+            let p = &mut self.particles;
+            p.vel[..nf]
+                .par_iter_mut()
+                .zip(p.acc.par_iter())
+                .for_each(|(v, a)| *v += a * half);
+            if continuity {
+                p.rho[..nf]
+                    .par_iter_mut()
+                    .zip(self.drho_next.par_iter().zip(p.drho.par_iter()))
+                    .for_each(|(r, (dn, d))| *r += half * (dn - d));
+                std::mem::swap(&mut p.drho, &mut self.drho_next);
+            }
+        }
+        self.time_s += dt;
+        self.step += 1;
+        self.last_dt_s = dt;
+        self.timings.integration_s += t0.elapsed().as_secs_f64();
+        self.health()?;
+        self.reinitialise_density::<K>();
+        Ok(dt)
+    }
+
+    /// Density, EOS, walls and forces at the current positions.
+    fn evaluate<K: Kernel>(&mut self) {
+        let t0 = Instant::now();
+        let m = &self.model;
+        let k = K::new(m.h_m);
+        let lists = &self.search.lists;
+        let p = &mut self.particles;
+        let nf = p.n_fluid;
+        if m.effects.density == DensityScheme::Summation {
+            density::summation(
+                &k,
+                &p.pos,
+                &p.phase,
+                &m.rho0,
+                lists,
+                m.lattice_kernel_sum,
+                &mut p.rho[..nf],
+            );
+        }
+        let eos = m.eos;
+        let clip = m.scene.density.negative_pressure == NegativePressure::Clip;
+        p.pressure[..nf]
+            .par_iter_mut()
+            .zip(p.vol[..nf].par_iter_mut())
+            .zip(p.rho[..nf].par_iter().zip(p.phase[..nf].par_iter()))
+            .for_each(|((pr, v), (&r, &ph))| {
+                let p = eos.pressure(r, m.rho0[ph as usize]);
+                // physics.md §2: tension from a deficient density would act as an extra,
+                // uncontrolled surface tension; the potential alone carries cohesion
+                *pr = if clip { p.max(0.0) } else { p };
+                *v = m.mass[ph as usize] / r;
+            });
+        if m.effects.walls {
+            walls::update(
+                &k,
+                &eos,
+                p,
+                lists,
+                &m.rho0,
+                m.rest_volume_m3,
+                m.effects.gravity.map(Vec3::from),
+                &self.wall_no_slip,
+            );
+        }
+        let t1 = Instant::now();
+        self.timings.density_s += (t1 - t0).as_secs_f64();
+
+        let e = &m.effects;
+        let (alpha1, alpha2) = e.artificial_viscosity.unwrap_or((0.0, 0.0));
+        let inp = forces::ForceInput {
+            kernel: k,
+            h_m: m.h_m,
+            l0_m: m.l0_m,
+            r_e_m: m.r_e_m,
+            c_m_s: m.c_m_s,
+            alpha: (alpha1, alpha2),
+            gravity: m.gravity(),
+            mass: &m.mass,
+            mu: &m.mu,
+            coeff: &m.pairs.coeff,
+            n_phases: m.pairs.n_phases,
+            n_fluid: nf,
+            pos: &p.pos,
+            vel: &p.vel,
+            rho: &p.rho,
+            pressure: &p.pressure,
+            vol: &p.vol,
+            phase: &p.phase,
+            wall_no_slip: &self.wall_no_slip,
+            lists,
+        };
+        forces::dispatch(
+            &inp,
+            e.laminar_viscosity,
+            e.artificial_viscosity.is_some(),
+            e.interfacial_tension,
+            e.walls,
+            e.density == DensityScheme::Continuity,
+            &mut p.acc,
+            &mut self.drho_next,
+        );
+        self.timings.forces_s += t1.elapsed().as_secs_f64();
+    }
+
+    fn reinitialise_density<K: Kernel>(&mut self) {
+        let Some((method, every)) = self.model.effects.density_reinit else {
+            return;
+        };
+        if self.step % every as u64 != 0 {
+            return;
+        }
+        let t0 = Instant::now();
+        let m = &self.model;
+        let k = K::new(m.h_m);
+        let p = &self.particles;
+        let lists = &self.search.lists;
+        let new = match method {
+            Reinit::Shepard => {
+                density::shepard(&k, &p.pos, &p.phase, &m.mass, &p.rho, lists, p.n_fluid)
+            }
+            Reinit::Mls => density::mls(
+                &k, &p.pos, &p.phase, &m.mass, &p.rho, lists, p.n_fluid, m.l0_m,
+            ),
+            Reinit::None => return,
+        };
+        self.particles.rho[..new.len()].copy_from_slice(&new);
+        self.timings.density_s += t0.elapsed().as_secs_f64();
+    }
+
+    /// Updates the speed and acceleration maxima and stops on non-finite values.
+    fn health(&mut self) -> Result<(), SimError> {
+        let p = &self.particles;
+        let nf = p.n_fluid;
+        let (v2, a2, bad) = (0..nf)
+            .into_par_iter()
+            .map(|i| {
+                let v2 = p.vel[i].norm_squared();
+                let a2 = p.acc[i].norm_squared();
+                let ok = v2.is_finite()
+                    && a2.is_finite()
+                    && p.rho[i].is_finite()
+                    && p.pos[i].iter().all(|x| x.is_finite());
+                (v2, a2, if ok { usize::MAX } else { i })
+            })
+            .reduce(
+                || (0.0, 0.0, usize::MAX),
+                |a, b| (a.0.max(b.0), a.1.max(b.1), a.2.min(b.2)),
+            );
+        if bad != usize::MAX {
+            return Err(SimError::Unstable {
+                step: self.step,
+                time_s: self.time_s,
+                particle_id: p.id[bad],
+                quantity: format!(
+                    "non-finite state (x = {:?} m, v = {:?} m/s, a = {:?} m/s², ρ = {} kg/m³)",
+                    p.pos[bad].as_slice(),
+                    p.vel[bad].as_slice(),
+                    p.acc[bad].as_slice(),
+                    p.rho[bad]
+                ),
+                cause: "the time step was too large for the forces; check the time-step limits"
+                    .into(),
+            });
+        }
+        self.max_speed2 = v2;
+        self.max_acc2 = a2;
+        Ok(())
+    }
+
+    /// Observables of the current state.
+    pub fn observe(&self) -> Observables {
+        observe(
+            &self.model,
+            &self.particles,
+            &self.search.lists,
+            self.time_s,
+            self.last_dt_s,
+            self.step,
+        )
+    }
+}

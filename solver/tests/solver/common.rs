@@ -1,0 +1,50 @@
+//! Shared scene builders.
+
+use solver::{Scene, Simulation};
+
+/// A matte-like liquid block of `n`³ particles at spacing `l0` [m] centred at the origin, with
+/// the given extra TOML appended (effects etc.).
+pub fn block_scene(n: usize, l0: f64, effects: &str, extra: &str) -> String {
+    let half = n as f64 * l0 / 2.0;
+    format!(
+        r#"
+[discretisation]
+l0 = {l0:e}
+sound_speed = 12.0
+[time]
+end = 1.0e-3
+output_interval = 1.0e-4
+[effects]
+{effects}
+[[liquid]]
+name = "matte"
+density = 4500.0
+viscosity = 3.13e-3
+surface_tension = 0.4
+[[body]]
+name = "block"
+liquid = "matte"
+shape = {{ kind = "box", min = [{m:e}, {m:e}, {m:e}], max = [{p:e}, {p:e}, {p:e}] }}
+{extra}
+"#,
+        m = -half,
+        p = half
+    )
+}
+
+/// Parses a scene that must be valid.
+pub fn scene(text: &str) -> Scene {
+    Scene::from_toml_str(text).unwrap_or_else(|e| panic!("scene should be valid: {e}\n{text}"))
+}
+
+/// Builds a simulation of a valid scene.
+pub fn sim(text: &str) -> Simulation {
+    Simulation::new(&scene(text)).unwrap_or_else(|e| panic!("simulation should build: {e}"))
+}
+
+/// Advances `steps` steps.
+pub fn advance(sim: &mut Simulation, steps: usize) {
+    for _ in 0..steps {
+        sim.step(f64::INFINITY).expect("step");
+    }
+}

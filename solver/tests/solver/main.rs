@@ -1,0 +1,10 @@
+//! Integration tests of the solver: one binary, a module per area. Each test states the
+//! physics it expects and where its tolerance comes from.
+
+mod common;
+mod conservation;
+mod determinism;
+mod effects;
+mod lattice_energy;
+mod scene_errors;
+mod walls;

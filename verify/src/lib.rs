@@ -1,0 +1,11 @@
+//! The verification harness and command-line tool of the Natsui SPH solver.
+//!
+//! `verify run SCENE.toml --out DIR` runs a scene and writes its time series, run record and
+//! snapshots. The analytic references ([`analytic`]) and measurements ([`measure`]) are what the
+//! paper checks are judged with.
+#![deny(missing_docs)]
+
+pub mod analytic;
+pub mod measure;
+pub mod output;
+pub mod run;

@@ -1,0 +1,119 @@
+//! The `run` command: outputs, run record, refusal to overwrite, and exit codes.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn scene_file(dir: &std::path::Path, text: &str) -> PathBuf {
+    std::fs::create_dir_all(dir).unwrap();
+    let p = dir.join("scene.toml");
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("verify-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+const SMALL: &str = r#"
+description = "a small matte drop relaxing"
+[discretisation]
+l0 = 1.0e-4
+sound_speed = 12.0
+[time]
+end = 2.0e-5
+output_interval = 1.0e-5
+[effects]
+interfacial_tension = true
+laminar_viscosity = true
+[[liquid]]
+name = "matte"
+density = 4500.0
+viscosity = 3.13e-3
+surface_tension = 0.4
+[[body]]
+name = "drop"
+liquid = "matte"
+shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 4.0e-4 }
+"#;
+
+fn verify() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_verify"))
+}
+
+#[test]
+fn run_writes_timeseries_run_info_and_snapshots() {
+    let dir = tmp("ok");
+    let scene = scene_file(&dir, SMALL);
+    let out = dir.join("out");
+    let st = verify()
+        .args(["run"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .args(["--vtk", "1", "--threads", "2"])
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let info: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("run_info.json")).unwrap()).unwrap();
+    assert_eq!(info["status"], "completed");
+    assert_eq!(info["threads"], 2);
+    assert!(info["particle_steps_per_second"].as_f64().unwrap() > 0.0);
+    assert!(info["effects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|e| e.as_str().unwrap().contains("interfacial tension")));
+    let ts = verify::output::timeseries::Table::read(&out.join("timeseries.csv")).unwrap();
+    assert_eq!(ts.rows.len(), 3, "rows at t = 0, 1e-5, 2e-5 s");
+    let t = ts.column("time_s").unwrap();
+    assert!((t[2] - 2e-5).abs() < 1e-12);
+    assert!(ts.column("matte_centroid_x_m").is_some());
+    for k in 0..3 {
+        assert!(out.join(format!("particles_{k:06}.vtu")).exists());
+    }
+    let vtu = std::fs::read_to_string(out.join("particles_000000.vtu")).unwrap();
+    assert!(vtu.contains("Name=\"pressure_Pa\"") && vtu.contains("Name=\"phase\""));
+
+    // an existing output folder is not overwritten without --force (exit code 3)
+    let st = verify()
+        .args(["run"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert_eq!(st.code(), Some(3));
+    let st = verify()
+        .args(["run"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .arg("--force")
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_invalid_scene_exits_with_code_2_and_names_the_field() {
+    let dir = tmp("bad");
+    let scene = scene_file(&dir, &SMALL.replace("density = 4500.0", "density = -1.0"));
+    let out = verify()
+        .args(["run"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("liquid[matte].density") && err.contains("-1"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,1 +1,333 @@
-//! Benchmarks live in benches/.
+//! Seeded inputs shared by the criterion benchmarks in `benches/benches/`.
+//!
+//! Every benchmark runs on a cube of copper matte (ρ = 4500 kg/m³, μ = 3.13 mPa·s,
+//! σ = 0.40 N/m, c = 12.25 m/s, Wendland C2, h = 1.05 l0) of 1 mm edge at two resolutions:
+//! 27³ = 19,683 particles (l0 = 1 mm/27, "20k") and 54³ = 157,464 particles (l0 = 1 mm/54,
+//! "160k"). The walls benchmark uses the same cube resting on a disk wall.
+//!
+//! A lattice is a special input (every pair distance repeats), so [`fixture`] displaces each
+//! fluid particle by a deterministic pseudo-random amount of up to ±0.05 l0 per axis and gives
+//! it a velocity of up to ±0.05 m/s per axis ([`Lcg`], fixed seed: the inputs are the same in
+//! every run), rebuilds the neighbour lists as `Simulation` does (sort by cell, permute,
+//! build), and takes one time step so that density, pressure, wall values and accelerations
+//! are those of the perturbed state. The result is a mid-run state.
+//!
+//! Run the benchmarks with `cargo bench -p benches [-- FILTER]`; criterion writes its reports
+//! under `target/criterion/`.
+
+use solver::kernel::{KernelKind, WendlandC2};
+use solver::physics::forces::ForceInput;
+use solver::state::{Particles, Vec3};
+use solver::{Scene, Simulation};
+use std::time::Duration;
+
+/// The kernel of every benchmark scene.
+pub type K = WendlandC2;
+
+/// Particles per cube edge, with the label used in benchmark ids.
+pub const SIZES: [(&str, usize); 2] = [("20k", 27), ("160k", 54)];
+
+/// The two potential cut-offs `r_e / l0` of the issue (the paper's 2.1 and the default 4.2).
+pub const CUTOFFS: [f64; 2] = [2.1, 4.2];
+
+/// Cube edge [m].
+const EDGE_M: f64 = 1.0e-3;
+
+/// Seed of the perturbation.
+const SEED: u64 = 0x5eed_2024_0bad_cafe;
+
+/// Benchmark label of a cut-off, e.g. `re2.1`.
+pub fn re_label(re_over_l0: f64) -> String {
+    format!("re{re_over_l0}")
+}
+
+/// Sampling settings. Criterion's default (100 samples, 5 s, linear sampling of at least 5050
+/// iterations) would take hours here; instead, to keep the whole `cargo bench -p benches`
+/// within about ten minutes on two cores:
+/// - 20k, light routines (≤ 40 ms): 20 samples in 6 s after a 1 s warm-up;
+/// - 20k heavy, and 160k light: 10 flat samples (every sample the same number of
+///   iterations, criterion's mode for long routines) in 5 s;
+/// - 160k heavy routines (a time step, a list rebuild: 0.2–1 s): 10 flat samples in 12 s
+///   after a 2 s warm-up, i.e. at least 10 timed iterations.
+#[derive(Clone, Copy, Debug)]
+pub struct Sampling {
+    /// Samples per benchmark.
+    pub sample_size: usize,
+    /// Warm-up time.
+    pub warm_up: Duration,
+    /// Target measurement time.
+    pub measurement: Duration,
+    /// Whether every sample runs the same number of iterations (criterion's `Flat` mode, for
+    /// long routines).
+    pub flat: bool,
+}
+
+/// Sampling for a cube of `n_side³` particles; `heavy` for a time step or a list rebuild.
+pub fn sampling(n_side: usize, heavy: bool) -> Sampling {
+    match (n_side > 30, heavy) {
+        (false, false) => Sampling {
+            sample_size: 20,
+            warm_up: Duration::from_secs(1),
+            measurement: Duration::from_secs(6),
+            flat: false,
+        },
+        (false, true) => Sampling {
+            sample_size: 10,
+            warm_up: Duration::from_secs(1),
+            measurement: Duration::from_secs(5),
+            flat: true,
+        },
+        (true, false) => Sampling {
+            sample_size: 10,
+            warm_up: Duration::from_secs(1),
+            measurement: Duration::from_secs(5),
+            flat: true,
+        },
+        (true, true) => Sampling {
+            sample_size: 10,
+            warm_up: Duration::from_secs(2),
+            measurement: Duration::from_secs(12),
+            flat: true,
+        },
+    }
+}
+
+/// Scene text: the matte cube of `n_side³` particles with the potential cut-off
+/// `re_over_l0`, laminar and artificial viscosity; with `plate`, the cube rests on a disk wall
+/// (z = 0) under gravity instead of floating free.
+pub fn scene_toml(n_side: usize, re_over_l0: f64, plate: bool) -> String {
+    let l0 = EDGE_M / n_side as f64;
+    let half = 0.5 * EDGE_M;
+    let (zmin, zmax) = if plate { (0.0, EDGE_M) } else { (-half, half) };
+    let mut s = format!(
+        r#"description = "benchmark: matte cube, {n_side}^3 particles, r_e = {re_over_l0} l0"
+
+[discretisation]
+l0 = {l0:?}
+kernel = "wendland_c2"
+h_over_l0 = 1.05
+re_over_l0 = {re_over_l0:?}
+sound_speed = 12.247448713915890
+
+[time]
+end = 1.0e-4
+output_interval = 1.0e-5
+
+[effects]
+interfacial_tension = true
+laminar_viscosity = true
+artificial_viscosity = {{ alpha1 = 0.01, alpha2 = 0.01 }}
+{gravity}
+[[liquid]]
+name = "matte"
+density = 4500.0
+viscosity = 3.13e-3
+surface_tension = 0.40
+
+[[body]]
+name = "cube"
+liquid = "matte"
+shape = {{ kind = "box", min = [{nh:?}, {nh:?}, {zmin:?}], max = [{half:?}, {half:?}, {zmax:?}] }}
+"#,
+        gravity = if plate {
+            "gravity = [0.0, 0.0, -9.81]\n"
+        } else {
+            ""
+        },
+        nh = -half,
+    );
+    if plate {
+        s.push_str(
+            r#"
+[[solid]]
+name = "alumina"
+contact_angles = { matte = 90.0 }
+
+[[wall]]
+name = "plate"
+solid = "alumina"
+shape = { kind = "disk", center = [0.0, 0.0, 0.0], radius = 8.0e-4 }
+"#,
+        );
+    }
+    s
+}
+
+/// A 64-bit linear congruential generator (Knuth's MMIX constants): deterministic, no
+/// dependencies; good enough to break the symmetry of a lattice.
+#[derive(Clone, Debug)]
+pub struct Lcg(u64);
+
+impl Lcg {
+    /// A generator with the given seed.
+    pub fn new(seed: u64) -> Self {
+        Lcg(seed)
+    }
+
+    /// Uniform in `[-1, 1)`, from the 53 high bits of the state.
+    pub fn symmetric(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        2.0 * (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 1.0
+    }
+
+    /// A vector with components uniform in `[-a, a)`.
+    pub fn vec(&mut self, a: f64) -> Vec3 {
+        Vec3::new(
+            a * self.symmetric(),
+            a * self.symmetric(),
+            a * self.symmetric(),
+        )
+    }
+}
+
+/// Reorders the fluid particles: new index `k` takes old index `perm[k]` — a copy of the
+/// crate-private `Particles::permute_fluid` (a parallel gather per array; here on scoped
+/// threads, one chunk per available thread, as the crate's rayon is not a dependency of the
+/// benchmarks).
+pub fn permute_fluid(p: &mut Particles, perm: &[u32]) {
+    fn gather<T: Copy + Send + Sync>(v: &mut [T], perm: &[u32]) {
+        if v.is_empty() {
+            return;
+        }
+        let old: Vec<T> = v[..perm.len()].to_vec();
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let per = perm.len().div_ceil(threads).max(1);
+        let old = &old;
+        std::thread::scope(|sc| {
+            for (dst, idx) in v[..perm.len()].chunks_mut(per).zip(perm.chunks(per)) {
+                sc.spawn(move || {
+                    for (x, &k) in dst.iter_mut().zip(idx) {
+                        *x = old[k as usize];
+                    }
+                });
+            }
+        });
+    }
+    gather(&mut p.pos, perm);
+    gather(&mut p.vel, perm);
+    gather(&mut p.acc, perm);
+    gather(&mut p.rho, perm);
+    gather(&mut p.drho, perm);
+    gather(&mut p.pressure, perm);
+    gather(&mut p.vol, perm);
+    gather(&mut p.phase, perm);
+    gather(&mut p.id, perm);
+    gather(&mut p.x_ref, perm);
+}
+
+/// Re-sorts the fluid particles by cell and rebuilds the neighbour lists, as the private
+/// `Simulation::rebuild_neighbours` does (the work of the `neighbours/rebuild` benchmark).
+pub fn rebuild_neighbours(sim: &mut Simulation) {
+    let nf = sim.particles.n_fluid;
+    let perm = sim
+        .search
+        .sort_order(&sim.particles.pos[..nf])
+        .expect("benchmark particles stay on the cell grid");
+    permute_fluid(&mut sim.particles, &perm);
+    let p = &mut sim.particles;
+    p.x_ref.copy_from_slice(&p.pos[..nf]);
+    sim.search
+        .build(&p.pos, nf)
+        .expect("benchmark particles stay on the cell grid");
+}
+
+/// The benchmark state: the scene of [`scene_toml`] built, its fluid perturbed (seeded), the
+/// lists rebuilt and one time step taken.
+pub fn fixture(n_side: usize, re_over_l0: f64, plate: bool) -> Simulation {
+    let scene = Scene::from_toml_str(&scene_toml(n_side, re_over_l0, plate))
+        .expect("benchmark scene parses");
+    let mut sim = Simulation::new(&scene).expect("benchmark scene builds");
+    assert_eq!(sim.model.kernel, KernelKind::WendlandC2);
+    assert_eq!(sim.particles.n_fluid, n_side.pow(3));
+    let l0 = sim.model.l0_m;
+    let mut rng = Lcg::new(SEED ^ ((n_side as u64) << 32));
+    let p = &mut sim.particles;
+    for i in 0..p.n_fluid {
+        p.pos[i] += rng.vec(0.05 * l0);
+        p.vel[i] = rng.vec(0.05);
+    }
+    rebuild_neighbours(&mut sim);
+    sim.step(f64::INFINITY)
+        .expect("one step of the benchmark scene");
+    sim
+}
+
+/// The force-loop input of the current state, built as `Simulation::evaluate` builds it.
+pub fn force_input(sim: &Simulation) -> ForceInput<'_, K> {
+    let m = &sim.model;
+    let p = &sim.particles;
+    let (alpha1, alpha2) = m.effects.artificial_viscosity.unwrap_or((0.0, 0.0));
+    ForceInput {
+        kernel: m.kernel_of::<K>(),
+        h_m: m.h_m,
+        l0_m: m.l0_m,
+        r_e_m: m.r_e_m,
+        c_m_s: m.c_m_s,
+        alpha: (alpha1, alpha2),
+        gravity: m.gravity(),
+        mass: &m.mass,
+        mu_pair: &m.mu_pair,
+        coeff: &m.pairs.coeff,
+        n_phases: m.pairs.n_phases,
+        n_fluid: p.n_fluid,
+        pos: &p.pos,
+        vel: &p.vel,
+        rho: &p.rho,
+        pressure: &p.pressure,
+        vol: &p.vol,
+        phase: &p.phase,
+        wall_no_slip: &sim.wall_no_slip,
+        lists: &sim.search.lists,
+    }
+}
+
+/// A query of the lists: for every fluid particle, the neighbours within the kernel support
+/// (near part) and within the potential cut-off (far part), counted by distance — the list
+/// traversal and distance test every pair loop pays, without physics. Parallel over fluid
+/// particles (one chunk per available thread); returns the number of pairs found.
+pub fn query_pairs(sim: &Simulation) -> u64 {
+    let lists = &sim.search.lists;
+    let pos = &sim.particles.pos;
+    let nf = sim.particles.n_fluid;
+    let s = sim.model.support_m;
+    let (s2, re2) = (s * s, sim.model.r_e_m * sim.model.r_e_m);
+    let count = |range: std::ops::Range<usize>| -> u64 {
+        let mut n = 0u64;
+        for i in range {
+            let pi = pos[i];
+            for &j in lists.near(i) {
+                n += u64::from((pi - pos[j as usize]).norm_squared() < s2);
+            }
+            for &j in lists.far(i) {
+                n += u64::from((pi - pos[j as usize]).norm_squared() < re2);
+            }
+        }
+        n
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let per = nf.div_ceil(threads * 8).max(1);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|sc| {
+        let handles: Vec<_> = (0..threads)
+            .map(|_| {
+                sc.spawn(|| {
+                    let mut n = 0;
+                    loop {
+                        let a = next.fetch_add(per, std::sync::atomic::Ordering::Relaxed);
+                        if a >= nf {
+                            return n;
+                        }
+                        n += count(a..(a + per).min(nf));
+                    }
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("query thread"))
+            .sum()
+    })
+}

@@ -22,7 +22,9 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod checkpoint;
 pub mod error;
+pub mod health;
 pub mod kernel;
 pub mod lattice;
 pub mod model;
@@ -35,6 +37,7 @@ pub mod simulation;
 pub mod state;
 pub mod timestep;
 
+pub use checkpoint::Checkpoint;
 pub use error::SimError;
 pub use model::Model;
 pub use observables::Observables;

@@ -108,6 +108,9 @@ pub struct Model {
     pub mu: Vec<f64>,
     /// Particle mass per phase [kg] (solids: 0).
     pub mass: Vec<f64>,
+    /// Viscosity of each pair of phases [Pa·s], row-major: `2μ_aμ_b/(μ_a + μ_b)` for two
+    /// liquids (Eq. 11, Natsui 2021; 0 if both are inviscid), the liquid's `μ` against a solid.
+    pub mu_pair: Vec<f64>,
     /// Fowkes pair table (zero coefficients without interfacial tension).
     pub pairs: PairTable,
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
@@ -169,6 +172,21 @@ impl Model {
             .map(|l| l.density * rest_volume_m3)
             .collect();
         mass.extend(scene.solids.iter().map(|_| 0.0));
+        let n_phases = phase_names.len();
+        let mut mu_pair = vec![0.0; n_phases * n_phases];
+        for a in 0..n_phases {
+            for b in a..n_phases {
+                let v = match (a < n_liquids, b < n_liquids) {
+                    (true, true) if mu[a] + mu[b] > 0.0 => 2.0 * mu[a] * mu[b] / (mu[a] + mu[b]),
+                    (true, true) => 0.0,
+                    (true, false) => mu[a],
+                    (false, true) => mu[b],
+                    (false, false) => 0.0,
+                };
+                mu_pair[a * n_phases + b] = v;
+                mu_pair[b * n_phases + a] = v;
+            }
+        }
         let pairs = if scene.effects.interfacial_tension {
             PairTable::from_scene(scene, surface_sum_m3)
         } else {
@@ -217,6 +235,7 @@ impl Model {
             rho0,
             mu,
             mass,
+            mu_pair,
             pairs,
             lattice_kernel_sum,
             rest_volume_m3,

@@ -54,6 +54,9 @@ pub struct Observables {
     pub max_speed_m_s: f64,
     /// Largest `|ρ/ρ0 − 1|` over fluid particles [-].
     pub max_density_deviation: f64,
+    /// Largest compression `ρ/ρ0 − 1` over fluid particles [-] (expansion at a free surface
+    /// excluded).
+    pub max_compression: f64,
 }
 
 /// Computes the observables of `p` at time `time_s` [s].
@@ -77,6 +80,7 @@ pub fn observe(
     let mut momentum = Vec3::zeros();
     let mut max_speed2: f64 = 0.0;
     let mut max_dev: f64 = 0.0;
+    let mut max_comp = f64::NEG_INFINITY;
     let mut mx = vec![Vec3::zeros(); nl];
     let mut mv = vec![Vec3::zeros(); nl];
     for i in 0..p.n_fluid {
@@ -95,7 +99,9 @@ pub fn observe(
         }
         momentum += v * m;
         max_speed2 = max_speed2.max(v.norm_squared());
-        max_dev = max_dev.max((p.rho[i] / model.rho0[a] - 1.0).abs());
+        let dev = p.rho[i] / model.rho0[a] - 1.0;
+        max_dev = max_dev.max(dev.abs());
+        max_comp = max_comp.max(dev);
     }
     for (a, s) in phases.iter_mut().enumerate() {
         if s.count > 0 {
@@ -119,6 +125,7 @@ pub fn observe(
         momentum_kg_m_s: momentum.into(),
         max_speed_m_s: max_speed2.sqrt(),
         max_density_deviation: max_dev,
+        max_compression: max_comp,
     }
 }
 

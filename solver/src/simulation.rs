@@ -11,6 +11,7 @@
 //!    D_n)`), health check, and periodic density re-initialisation.
 
 use crate::error::SimError;
+use crate::health;
 use crate::kernel::Kernel;
 use crate::model::Model;
 use crate::neighbours::NeighbourSearch;
@@ -59,8 +60,10 @@ pub struct Simulation {
     pub last_dt_s: f64,
     /// Time per part of the step.
     pub timings: StepTimings,
-    max_speed2: f64,
-    max_acc2: f64,
+    pub(crate) max_speed2: f64,
+    pub(crate) max_acc2: f64,
+    /// The stable step of the initial state [s] (for the collapse check).
+    pub(crate) first_dt_s: f64,
     drho_next: Vec<f64>,
 }
 
@@ -91,14 +94,46 @@ impl Simulation {
             timings: StepTimings::default(),
             max_speed2: 0.0,
             max_acc2: 0.0,
+            first_dt_s: 0.0,
             drho_next: vec![0.0; n_fluid],
         };
         sim.sort_walls()?;
         sim.rebuild_neighbours()?;
         with_kernel!(sim.model.kernel, K => sim.evaluate::<K>());
         sim.health()?;
+        sim.first_dt_s = sim.step_limits().min().0;
         sim.check_affordable()?;
         Ok(sim)
+    }
+
+    /// Assembles a simulation from restored parts (see [`crate::checkpoint`]).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_parts(
+        model: Model,
+        particles: Particles,
+        search: NeighbourSearch,
+        wall_no_slip: Vec<bool>,
+        inventory: Inventory,
+        (time_s, step, last_dt_s): (f64, u64, f64),
+        (max_speed2, max_acc2, first_dt_s): (f64, f64, f64),
+        timings: StepTimings,
+        n_fluid: usize,
+    ) -> Simulation {
+        Simulation {
+            model,
+            particles,
+            search,
+            wall_no_slip,
+            inventory,
+            time_s,
+            step,
+            last_dt_s,
+            timings,
+            max_speed2,
+            max_acc2,
+            first_dt_s,
+            drho_next: vec![0.0; n_fluid],
+        }
     }
 
     fn sort_walls(&mut self) -> Result<(), SimError> {
@@ -326,7 +361,7 @@ impl Simulation {
             alpha: (alpha1, alpha2),
             gravity: m.gravity(),
             mass: &m.mass,
-            mu: &m.mu,
+            mu_pair: &m.mu_pair,
             coeff: &m.pairs.coeff,
             n_phases: m.pairs.n_phases,
             n_fluid: nf,
@@ -377,44 +412,43 @@ impl Simulation {
         self.timings.density_s += t0.elapsed().as_secs_f64();
     }
 
-    /// Updates the speed and acceleration maxima and stops on non-finite values.
+    /// Updates the speed and acceleration maxima and checks the state against the scene's
+    /// health bounds ([`crate::health`]).
     fn health(&mut self) -> Result<(), SimError> {
+        let ex = health::extremes(&self.particles, &self.model.rho0);
+        self.max_speed2 = ex.speed2.0;
+        self.max_acc2 = ex.acc2.0;
+        health::check(&health::Context {
+            model: &self.model,
+            particles: &self.particles,
+            step: self.step,
+            time_s: self.time_s,
+            extremes: ex,
+            limits: self.step_limits(),
+            dt_s: self.last_dt_s,
+            first_dt_s: self.first_dt_s,
+        })
+    }
+
+    /// Mean number of neighbours per fluid particle within the largest interaction radius
+    /// (kernel support, or `r_e` with interfacial tension) — the pairs a step evaluates per
+    /// particle; the lists hold a few more (the Verlet skin).
+    pub fn mean_neighbours(&self) -> f64 {
         let p = &self.particles;
-        let nf = p.n_fluid;
-        let (v2, a2, bad) = (0..nf)
+        let r = self.search.far_radius_m;
+        let r2 = r * r;
+        let total: usize = (0..p.n_fluid)
             .into_par_iter()
             .map(|i| {
-                let v2 = p.vel[i].norm_squared();
-                let a2 = p.acc[i].norm_squared();
-                let ok = v2.is_finite()
-                    && a2.is_finite()
-                    && p.rho[i].is_finite()
-                    && p.pos[i].iter().all(|x| x.is_finite());
-                (v2, a2, if ok { usize::MAX } else { i })
+                self.search
+                    .lists
+                    .all(i)
+                    .iter()
+                    .filter(|&&j| (p.pos[i] - p.pos[j as usize]).norm_squared() < r2)
+                    .count()
             })
-            .reduce(
-                || (0.0, 0.0, usize::MAX),
-                |a, b| (a.0.max(b.0), a.1.max(b.1), a.2.min(b.2)),
-            );
-        if bad != usize::MAX {
-            return Err(SimError::Unstable {
-                step: self.step,
-                time_s: self.time_s,
-                particle_id: p.id[bad],
-                quantity: format!(
-                    "non-finite state (x = {:?} m, v = {:?} m/s, a = {:?} m/s², ρ = {} kg/m³)",
-                    p.pos[bad].as_slice(),
-                    p.vel[bad].as_slice(),
-                    p.acc[bad].as_slice(),
-                    p.rho[bad]
-                ),
-                cause: "the time step was too large for the forces; check the time-step limits"
-                    .into(),
-            });
-        }
-        self.max_speed2 = v2;
-        self.max_acc2 = a2;
-        Ok(())
+            .sum();
+        total as f64 / p.n_fluid.max(1) as f64
     }
 
     /// Observables of the current state.

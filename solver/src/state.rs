@@ -54,14 +54,16 @@ impl Particles {
 
     /// Reorders the fluid particles: new index `k` takes old index `perm[k]`.
     pub(crate) fn permute_fluid(&mut self, perm: &[u32]) {
-        fn gather<T: Copy>(v: &mut [T], perm: &[u32]) {
+        use rayon::prelude::*;
+        fn gather<T: Copy + Send + Sync>(v: &mut [T], perm: &[u32]) {
             if v.is_empty() {
                 return;
             }
             let old: Vec<T> = v[..perm.len()].to_vec();
-            for (k, &p) in perm.iter().enumerate() {
-                v[k] = old[p as usize];
-            }
+            v[..perm.len()]
+                .par_iter_mut()
+                .zip(perm.par_iter())
+                .for_each(|(x, &p)| *x = old[p as usize]);
         }
         gather(&mut self.pos, perm);
         gather(&mut self.vel, perm);

@@ -6,6 +6,10 @@
 #![deny(missing_docs)]
 
 pub mod analytic;
+pub mod cases;
 pub mod measure;
 pub mod output;
+pub mod report;
 pub mod run;
+pub mod study;
+pub mod suite;

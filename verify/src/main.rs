@@ -1,8 +1,12 @@
-//! `verify`: run scenes and reproduce the papers' checks.
+//! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in the README.
 
 use clap::{Parser, Subcommand};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use verify::run::{load_scene, run_scene, RunOptions};
+use verify::suite::runner::{self, SuiteOptions};
+use verify::suite::{all_cases, Fidelity};
 
 #[derive(Parser)]
 #[command(
@@ -15,15 +19,57 @@ struct Cli {
     command: Command,
 }
 
+#[derive(clap::Args, Clone)]
+struct SuiteArgs {
+    /// smoke (seconds per case), standard (default), paper (the papers' resolutions).
+    #[arg(long, value_enum, default_value = "standard")]
+    fidelity: Fidelity,
+    /// Output folder (default: reports/, or reports/smoke, reports/paper).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Re-run finished runs.
+    #[arg(long)]
+    force: bool,
+    /// Worker threads per run (default: all cores).
+    #[arg(long, value_name = "N")]
+    threads: Option<usize>,
+}
+
+impl SuiteArgs {
+    fn options(&self) -> SuiteOptions {
+        let out = self.out.clone().unwrap_or_else(|| match self.fidelity {
+            Fidelity::Standard => PathBuf::from("reports"),
+            f => Path::new("reports").join(f.name()),
+        });
+        SuiteOptions {
+            fidelity: self.fidelity,
+            out,
+            force: self.force,
+            threads: self.threads,
+            progress: true,
+        }
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
-    /// Run one scene file.
+    /// Run one scene file (or continue a stopped run with --resume DIR).
     Run {
         /// The scene (TOML).
-        scene: PathBuf,
+        #[arg(required_unless_present = "resume")]
+        scene: Option<PathBuf>,
         /// Output folder.
-        #[arg(long)]
-        out: PathBuf,
+        #[arg(long, required_unless_present = "resume", conflicts_with = "resume")]
+        out: Option<PathBuf>,
+        /// Continue the run in this folder from its checkpoint (bitwise as if never stopped).
+        #[arg(long, value_name = "DIR")]
+        resume: Option<PathBuf>,
+        /// Write a checkpoint every N steps.
+        #[arg(long, value_name = "N")]
+        checkpoint_steps: Option<u64>,
+        /// Write a checkpoint every M minutes of wall time.
+        #[arg(long, value_name = "M", default_value = "10")]
+        checkpoint_minutes: f64,
         /// Write a particle snapshot (.vtu) every N outputs.
         #[arg(long, value_name = "N")]
         vtk: Option<u32>,
@@ -34,6 +80,59 @@ enum Command {
         #[arg(long)]
         force: bool,
     },
+    /// List the verification cases.
+    List {
+        /// Show the runs at this fidelity.
+        #[arg(long, value_enum, default_value = "standard")]
+        fidelity: Fidelity,
+    },
+    /// Run some cases (missing runs are simulated, finished ones reused) and report them.
+    Case {
+        /// Case names (see `verify list`).
+        #[arg(required = true)]
+        names: Vec<String>,
+        #[command(flatten)]
+        suite: SuiteArgs,
+    },
+    /// Run every case and write OUT/summary.md.
+    All {
+        #[command(flatten)]
+        suite: SuiteArgs,
+        /// Compare with a baseline summary.csv; exit with code 4 if any metric is worse.
+        #[arg(long, value_name = "BASELINE.csv")]
+        compare: Option<PathBuf>,
+    },
+    /// Studies across discretisation choices.
+    Study {
+        #[command(subcommand)]
+        which: StudyKind,
+    },
+    /// Redraw every plot and table from saved runs, without simulating.
+    Report {
+        /// Output folder of a previous suite run.
+        #[arg(long, default_value = "reports")]
+        out: PathBuf,
+    },
+}
+
+#[derive(Subcommand)]
+enum StudyKind {
+    /// What accuracy costs in time: the cube drop and a sessile drop over resolution, kernel,
+    /// h/l0, r_e/l0 and density scheme. Finished points are reused unless --force.
+    AccuracyCost {
+        /// reduced (tests), standard (each single change from the defaults), full (factorial).
+        #[arg(long, value_enum, default_value = "standard")]
+        grid: verify::study::Grid,
+        /// Output folder.
+        #[arg(long, default_value = "reports/study")]
+        out: PathBuf,
+        /// Re-run finished points.
+        #[arg(long)]
+        force: bool,
+        /// Worker threads per run (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+    },
 }
 
 fn main() {
@@ -42,18 +141,35 @@ fn main() {
         Command::Run {
             scene,
             out,
+            resume,
+            checkpoint_steps,
+            checkpoint_minutes,
             vtk,
             threads,
             force,
         } => {
+            // Ctrl-C: finish the current step, write a checkpoint, flush, exit 130
+            let interrupt = Arc::new(AtomicBool::new(false));
+            let flag = interrupt.clone();
+            let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
             let opts = RunOptions {
-                out_dir: out,
+                out_dir: resume.clone().or(out).unwrap_or_default(),
                 vtk_every: vtk,
                 threads,
                 force,
                 progress: true,
+                checkpoint_steps,
+                checkpoint_minutes: Some(checkpoint_minutes),
+                resume: resume.is_some(),
+                interrupt: Some(interrupt),
             };
-            match load_scene(&scene).and_then(|s| run_scene(&s, &scene, &opts)) {
+            let result = match (&resume, &scene) {
+                (Some(dir), _) => verify::output::checkpoint::scene_of(dir)
+                    .and_then(|(s, file)| run_scene(&s, &file, &opts)),
+                (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
+                (None, None) => unreachable!("clap requires a scene or --resume"),
+            };
+            match result {
                 Ok(info) => {
                     eprintln!(
                         "done: {} steps, {:.3e} s simulated, {:.1} s wall, {:.3e} particle-steps/s",
@@ -70,6 +186,127 @@ fn main() {
                 }
             }
         }
+        Command::List { fidelity } => {
+            for case in all_cases() {
+                println!("{:<24} {}", case.name(), case.title());
+                println!("{:<24} source: {}", "", case.source());
+                println!("{:<24} effects: {}", "", case.effects().describe());
+                let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
+                println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
+                println!("{:<24} resolution: {}", "", case.resolution(fidelity));
+            }
+            0
+        }
+        Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
+        Command::All { suite, compare } => {
+            exit_of(run_suite(&suite.options(), None, compare.as_deref()))
+        }
+        Command::Report { out } => exit_of(report(&out)),
+        Command::Study {
+            which:
+                StudyKind::AccuracyCost {
+                    grid,
+                    out,
+                    force,
+                    threads,
+                },
+        } => exit_of(accuracy_cost(grid, &out, force, threads)),
     };
     std::process::exit(code);
+}
+
+/// Runs the named cases (or all) and writes the summaries; the exit code.
+fn run_suite(
+    opts: &SuiteOptions,
+    names: Option<&[String]>,
+    baseline: Option<&Path>,
+) -> anyhow::Result<i32> {
+    let cases = all_cases();
+    if let Some(names) = names {
+        for n in names {
+            if !cases.iter().any(|c| c.name() == n) {
+                let known: Vec<&str> = cases.iter().map(|c| c.name()).collect();
+                eprintln!("error: no case named {n:?}; cases: {}", known.join(", "));
+                return Ok(2);
+            }
+        }
+    }
+    runner::write_record(&opts.out, opts.fidelity)?;
+    for case in &cases {
+        if names.is_some_and(|n| !n.iter().any(|x| x == case.name())) {
+            continue;
+        }
+        let metrics = runner::run_case(case.as_ref(), opts)?;
+        let judged = metrics.iter().filter(|m| m.pass().is_some()).count();
+        let passed = metrics.iter().filter(|m| m.pass() == Some(true)).count();
+        eprintln!(
+            "{}: {passed}/{judged} judged metrics within tolerance",
+            case.name()
+        );
+    }
+    let regressions = runner::write_summaries(&opts.out, opts.fidelity, baseline)?;
+    eprintln!("summary: {}", opts.out.join("summary.md").display());
+    if let Some(r) = regressions {
+        if !r.is_empty() {
+            eprintln!("{} metric(s) worse than the baseline:", r.len());
+            for x in &r {
+                eprintln!("  {} / {}: {}", x.case, x.name, x.message);
+            }
+            return Ok(4);
+        }
+        eprintln!("no metric worse than the baseline");
+    }
+    Ok(0)
+}
+
+fn report(out: &Path) -> anyhow::Result<i32> {
+    let record = runner::read_record(out)?;
+    for case in all_cases() {
+        if out.join(case.name()).exists() {
+            runner::analyse_case(case.as_ref(), record.fidelity, out)?;
+        }
+    }
+    runner::write_summaries(out, record.fidelity, None)?;
+    eprintln!("summary: {}", out.join("summary.md").display());
+    Ok(0)
+}
+
+fn exit_of(r: anyhow::Result<i32>) -> i32 {
+    match r {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            3
+        }
+    }
+}
+
+fn accuracy_cost(
+    grid: verify::study::Grid,
+    out: &Path,
+    force: bool,
+    threads: Option<usize>,
+) -> anyhow::Result<i32> {
+    use verify::study::{analysis, points};
+    let exe = std::env::current_exe()?;
+    std::fs::create_dir_all(out)?;
+    let all = grid.points();
+    let mut results = Vec::new();
+    for (k, p) in all.iter().enumerate() {
+        let r = points::run_point(p, out, &exe, threads, force)?;
+        eprintln!(
+            "[{}/{}] {}: error {:+.2} %, {:.1} s, {:.3e} particle-steps/s ({})",
+            k + 1,
+            all.len(),
+            p.id(),
+            100.0 * r.relative_error,
+            r.wall_time_s,
+            r.particle_steps_per_second,
+            r.status
+        );
+        results.push(r);
+    }
+    analysis::write(out, &results, &grid.variants())?;
+    eprintln!("study: {}", out.join("summary.md").display());
+    Ok(0)
 }

@@ -117,3 +117,38 @@ fn an_invalid_scene_exits_with_code_2_and_names_the_field() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_failing_run_exits_1_keeps_its_outputs_and_says_why() {
+    // gravity of 1e4 m/s² accelerates the drop past Mach 0.5 (6 m/s at c = 12 m/s) after about
+    // 0.6 ms: several outputs are written before the health check stops the run
+    let dir = tmp("fail");
+    let text = SMALL
+        .replace("end = 2.0e-5", "end = 2.0e-3")
+        .replace("output_interval = 1.0e-5", "output_interval = 1.0e-4")
+        .replace("[effects]", "[effects]\ngravity = [0.0, 0.0, -1.0e4]");
+    let scene = scene_file(&dir, &text);
+    let out = dir.join("out");
+    let res = verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(
+        res.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&res.stderr)
+    );
+    let err = String::from_utf8_lossy(&res.stderr);
+    assert!(err.contains("Mach") && err.contains("sound_speed"), "{err}");
+    let info: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("run_info.json")).unwrap()).unwrap();
+    assert_eq!(info["status"], "failed");
+    assert!(info["error"].as_str().unwrap().contains("Mach"));
+    let ts = verify::output::timeseries::Table::read(&out.join("timeseries.csv")).unwrap();
+    assert!(ts.rows.len() > 3, "outputs before the failure are kept");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -32,6 +32,19 @@ impl Kernel for WendlandC2 {
         self.norm * a2 * a2 * (2.0 * q + 1.0) // Eq. (5), Natsui 2021
     }
     #[inline(always)]
+    fn w_inside(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        let a = 1.0 - 0.5 * q;
+        let a2 = a * a;
+        self.norm * a2 * a2 * (2.0 * q + 1.0) // Eq. (5), Natsui 2021
+    }
+    #[inline(always)]
+    fn dw_dr_inside(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        let a = 1.0 - 0.5 * q;
+        -5.0 * self.norm * self.inv_h * q * a * a * a
+    }
+    #[inline(always)]
     fn dw_dr(&self, r_m: f64) -> f64 {
         let q = r_m * self.inv_h;
         if q >= 2.0 {

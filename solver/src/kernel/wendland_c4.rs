@@ -33,6 +33,20 @@ impl Kernel for WendlandC4 {
         self.norm * a3 * a3 * (35.0 / 12.0 * q * q + 3.0 * q + 1.0)
     }
     #[inline(always)]
+    fn w_inside(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        let a = 1.0 - 0.5 * q;
+        let a3 = a * a * a;
+        self.norm * a3 * a3 * (35.0 / 12.0 * q * q + 3.0 * q + 1.0)
+    }
+    #[inline(always)]
+    fn dw_dr_inside(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        let a = 1.0 - 0.5 * q;
+        let a5 = a * a * a * a * a;
+        -self.norm * self.inv_h * (14.0 / 3.0) * q * (1.0 + 2.5 * q) * a5
+    }
+    #[inline(always)]
     fn dw_dr(&self, r_m: f64) -> f64 {
         let q = r_m * self.inv_h;
         if q >= 2.0 {

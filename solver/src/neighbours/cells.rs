@@ -30,13 +30,14 @@ pub fn cell_key(p: &Vec3, inv_cell_m: f64) -> Result<u64, CellKeyError> {
     let mut key = 0u64;
     for axis in (0..3).rev() {
         let c = (p[axis] * inv_cell_m).floor();
-        // keep one cell of margin at each end so that the neighbours of a cell have keys too
-        if !(c > (1 - OFFSET) as f64 && c < (OFFSET - 2) as f64) {
+        // keep a margin of cells at each end so that the neighbours of a cell have keys too
+        let margin = super::REACH + 1;
+        if !(c > (margin - OFFSET) as f64 && c < (OFFSET - margin) as f64) {
             return Err(CellKeyError {
                 x: p[0],
                 y: p[1],
                 z: p[2],
-                limit_m: (OFFSET - 2) as f64 / inv_cell_m,
+                limit_m: (OFFSET - super::REACH - 1) as f64 / inv_cell_m,
             });
         }
         key = (key << BITS) | ((c as i64 + OFFSET) as u64 & MASK);
@@ -45,7 +46,7 @@ pub fn cell_key(p: &Vec3, inv_cell_m: f64) -> Result<u64, CellKeyError> {
 }
 
 /// Key of the cell displaced by `(dx, dy, dz)` cells from `key` (no overflow: keys keep a
-/// margin of one cell).
+/// margin of `REACH` cells).
 #[inline]
 pub(crate) fn offset_key(key: u64, dx: i64, dy: i64, dz: i64) -> u64 {
     let x = (key & MASK) as i64 + dx;

@@ -24,13 +24,24 @@ pub fn summation<K: Kernel>(
 ) {
     let support2 = kernel.support_m() * kernel.support_m();
     let w0 = kernel.w(0.0);
+    const CHUNK: usize = 16;
     rho_out.par_iter_mut().enumerate().for_each(|(i, rho)| {
         let pi = pos[i];
         let mut s = w0;
-        for &j in lists.near(i) {
-            let r2 = (pi - pos[j as usize]).norm_squared();
-            if r2 < support2 {
-                s += kernel.w(r2.sqrt());
+        // gather, evaluate W branch-free over the chunk (vectorisable), then add in list order:
+        // the same sum, bit for bit, as a scalar loop
+        for chunk in lists.near(i).chunks(CHUNK) {
+            let mut r2 = [f64::INFINITY; CHUNK];
+            for (k, &j) in chunk.iter().enumerate() {
+                r2[k] = (pi - pos[j as usize]).norm_squared();
+            }
+            let mut w = [0.0; CHUNK];
+            for k in 0..CHUNK {
+                let v = kernel.w_inside(r2[k].min(support2).sqrt());
+                w[k] = if r2[k] < support2 { v } else { 0.0 };
+            }
+            for wk in &w[..chunk.len()] {
+                s += wk;
             }
         }
         *rho = rho0[phase[i] as usize] * s / lattice_sum; // Eq. (6), Natsui 2021 (number density)

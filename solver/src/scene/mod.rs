@@ -82,6 +82,48 @@ pub struct Scene {
     /// Fixed solid walls.
     #[serde(default, rename = "wall")]
     pub walls: Vec<Wall>,
+    /// When a run stops as unstable.
+    #[serde(default)]
+    pub health: Health,
+}
+
+/// The bounds past which a run stops with a diagnosis instead of producing garbage.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Health {
+    /// Largest particle speed over the sound speed [-]. Default 0.5: weak compressibility
+    /// assumes Mach ≲ 0.1 (physics.md §3); at 0.5 density errors are ~25 %.
+    #[serde(default = "default_max_mach")]
+    pub max_mach: f64,
+    /// Largest compression `ρ/ρ0 − 1` of a fluid particle [-]. Default 1.0 (density doubled):
+    /// a blow-up detector, not an accuracy bound — a relaxing cube's corners are transiently
+    /// compressed by 20 % and more while the run stays healthy. (Expansion is not bounded: a
+    /// summation density is legitimately low at a free surface.)
+    #[serde(default = "default_max_compression")]
+    pub max_compression: f64,
+    /// Smallest adaptive step as a fraction of the first step [-]. Default 1e-3.
+    #[serde(default = "default_min_dt_ratio")]
+    pub min_dt_ratio: f64,
+}
+
+fn default_max_mach() -> f64 {
+    0.5
+}
+fn default_max_compression() -> f64 {
+    1.0
+}
+fn default_min_dt_ratio() -> f64 {
+    1e-3
+}
+
+impl Default for Health {
+    fn default() -> Self {
+        Self {
+            max_mach: default_max_mach(),
+            max_compression: default_max_compression(),
+            min_dt_ratio: default_min_dt_ratio(),
+        }
+    }
 }
 
 /// Spatial discretisation and numerical parameters.
@@ -113,6 +155,14 @@ pub struct Discretisation {
     /// plus this skin and are rebuilt when a particle has moved half of it. Default 0.2.
     #[serde(default = "default_skin_over_l0")]
     pub neighbour_skin_over_l0: f64,
+    /// Most particles (liquid and wall) a scene may build; checked from the shapes' volumes
+    /// before anything is allocated. Default 20 000 000 (about 20 GB at r_e = 4.2 l0).
+    #[serde(default = "default_max_particles")]
+    pub max_particles: u64,
+}
+
+fn default_max_particles() -> u64 {
+    20_000_000
 }
 
 /// Particle mass model. In both, the density summation is calibrated so that the undisturbed

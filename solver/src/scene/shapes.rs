@@ -92,7 +92,9 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 /// Lattice index range `i` whose sites `(i + ½) l0` can lie in `[lo, hi]`.
 fn index_range(lo: f64, hi: f64, l0: f64) -> std::ops::RangeInclusive<i64> {
-    ((lo / l0 - 0.5).floor() as i64 - 1)..=((hi / l0 - 0.5).ceil() as i64 + 1)
+    // saturating: validation keeps shapes inside the domain; this only guards the arithmetic
+    ((lo / l0 - 0.5).floor() as i64).saturating_sub(1)
+        ..=((hi / l0 - 0.5).ceil() as i64).saturating_add(1)
 }
 
 /// Calls `f` for every lattice site `(i + ½) l0` in the axis-aligned box `[lo, hi]`, in a fixed

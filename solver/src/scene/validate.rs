@@ -64,7 +64,89 @@ pub(super) fn validate(s: &Scene) -> R {
     materials(s)?;
     bodies(s)?;
     walls(s)?;
-    tension_inputs(s)
+    tension_inputs(s)?;
+    particle_budget(s)
+}
+
+/// Half-width of the domain in spacings: shapes must lie within ±`DOMAIN_SPACINGS`·l0 of the
+/// origin (the neighbour grid spans ±2²⁰ cells of at least one spacing; this keeps a margin).
+pub(crate) const DOMAIN_SPACINGS: f64 = 524_288.0;
+
+fn inside_domain(field: String, lo: [f64; 3], hi: [f64; 3], l0: f64) -> R {
+    let limit = DOMAIN_SPACINGS * l0;
+    if (0..3).all(|k| lo[k] >= -limit && hi[k] <= limit) {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
+            field,
+            format!("{lo:?} … {hi:?}"),
+            format!("shapes must lie within ±{limit:e} m of the origin (2^19 spacings at l0 = {l0:e} m)"),
+        ))
+    }
+}
+
+/// Upper estimate of the particles the bodies and walls will take, from their bounding boxes,
+/// refused above `discretisation.max_particles` before anything is allocated.
+fn particle_budget(s: &Scene) -> R {
+    let l0 = s.discretisation.l0;
+    for b in &s.bodies {
+        let (lo, hi) = b.shape.bounds();
+        inside_domain(format!("body[{}].shape", b.name), lo, hi, l0)?;
+    }
+    for w in &s.walls {
+        let t = s.wall_layers(w) as f64 * l0;
+        let (lo, hi) = match w.shape {
+            super::WallShape::Disk {
+                center: c,
+                radius: r,
+            } => ([c[0] - r, c[1] - r, c[2] - t], [c[0] + r, c[1] + r, c[2]]),
+            super::WallShape::Plate { min, max, top } => {
+                ([min[0], min[1], top - t], [max[0], max[1], top])
+            }
+            super::WallShape::Box { min, max, .. } => (
+                [min[0] - t, min[1] - t, min[2] - t],
+                [max[0] + t, max[1] + t, max[2] + t],
+            ),
+        };
+        inside_domain(format!("wall[{}].shape", w.name), lo, hi, l0)?;
+    }
+    let cells = |lo: [f64; 3], hi: [f64; 3]| -> f64 {
+        (0..3).map(|k| (hi[k] - lo[k]) / l0 + 2.0).product()
+    };
+    let mut n: f64 = s
+        .bodies
+        .iter()
+        .map(|b| {
+            let (lo, hi) = b.shape.bounds();
+            cells(lo, hi)
+        })
+        .sum();
+    for w in &s.walls {
+        let t = s.wall_layers(w) as f64 * l0;
+        n += match w.shape {
+            super::WallShape::Disk {
+                center: c,
+                radius: r,
+            } => cells([c[0] - r, c[1] - r, c[2] - t], [c[0] + r, c[1] + r, c[2]]),
+            super::WallShape::Plate { min, max, top } => {
+                cells([min[0], min[1], top - t], [max[0], max[1], top])
+            }
+            super::WallShape::Box { min, max, .. } => cells(
+                [min[0] - t, min[1] - t, min[2] - t],
+                [max[0] + t, max[1] + t, max[2] + t],
+            ),
+        };
+    }
+    let limit = s.discretisation.max_particles;
+    let within = n <= limit as f64; // false for NaN
+    if !within {
+        return Err(SceneError::invalid(
+            "discretisation.max_particles",
+            limit,
+            format!("the bodies and walls would take up to {n:.3e} particles at l0 = {l0:e} m; enlarge l0, shrink the shapes, or raise max_particles"),
+        ));
+    }
+    Ok(())
 }
 
 fn discretisation(s: &Scene) -> R {
@@ -137,7 +219,21 @@ fn time(s: &Scene) -> R {
         1.0,
         "a safety factor",
     )?;
-    in_range("time.factors.force", f.force, 0.0, 1.0, "a safety factor")
+    in_range("time.factors.force", f.force, 0.0, 1.0, "a safety factor")?;
+    let h = &s.health;
+    positive("health.max_mach", h.max_mach, "the largest Mach number")?;
+    positive(
+        "health.max_compression",
+        h.max_compression,
+        "the largest compression ρ/ρ0 − 1",
+    )?;
+    in_range(
+        "health.min_dt_ratio",
+        h.min_dt_ratio,
+        0.0,
+        1.0,
+        "the smallest step over the first step",
+    )
 }
 
 fn effects(s: &Scene) -> R {

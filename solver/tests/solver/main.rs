@@ -1,10 +1,13 @@
 //! Integration tests of the solver: one binary, a module per area. Each test states the
 //! physics it expects and where its tolerance comes from.
 
+mod checkpoint;
 mod common;
 mod conservation;
 mod determinism;
 mod effects;
+mod failures;
+mod fuzz_scenes;
 mod lattice_energy;
 mod scene_errors;
 mod walls;

@@ -1,5 +1,8 @@
 //! Measurements on simulated data: oscillation period and damping, geometric fits.
 
 pub mod fit;
+pub mod geometry;
+pub mod invariants;
 pub mod oscillation;
 pub mod shape;
+pub mod surface;

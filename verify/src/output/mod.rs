@@ -1,6 +1,7 @@
 //! Files a run writes: the observables' time series (CSV), the run record (JSON) and particle
 //! snapshots (VTK).
 
+pub mod checkpoint;
 pub mod run_info;
 pub mod timeseries;
 pub mod vtk;

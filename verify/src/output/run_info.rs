@@ -47,14 +47,28 @@ pub struct RunInfo {
     pub wall_time_s: f64,
     /// Fluid particles × steps / wall time [1/s].
     pub particle_steps_per_second: f64,
-    /// Mean neighbours per fluid particle within the largest cut-off (+ skin) at the end.
+    /// Mean neighbours per fluid particle within the largest interaction radius (kernel
+    /// support, or r_e with tension) at the end: the pairs a step evaluates per particle.
     pub mean_neighbours: f64,
     /// Neighbour-list builds.
     pub neighbour_builds: u64,
     /// Wall-clock time per part of the step [s].
     pub timings: StepTimings,
+    /// Peak resident memory of the process at the end of the run [bytes] (Linux `VmHWM`; the
+    /// run's own peak when it ran in its own process, as `verify run` does).
+    #[serde(default)]
+    pub peak_memory_bytes: Option<u64>,
     /// How the run ended.
     pub status: Status,
     /// The error, if it failed.
     pub error: Option<String>,
+}
+
+/// The process's peak resident memory [bytes], from `/proc/self/status` (`VmHWM`); `None`
+/// where that file does not exist.
+pub fn peak_memory_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
 }

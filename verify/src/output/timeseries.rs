@@ -18,6 +18,7 @@ pub fn header(phases: &[String]) -> Vec<String> {
         "momentum_z_kg_m_s",
         "max_speed_m_s",
         "max_density_deviation",
+        "max_compression",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -32,12 +33,14 @@ pub fn header(phases: &[String]) -> Vec<String> {
             }
         }
         h.push(format!("{p}_kinetic_energy_J"));
+        h.push(format!("{p}_q4"));
     }
     h
 }
 
-/// The values of one row, in [`header`] order.
-pub fn row(o: &Observables) -> Vec<f64> {
+/// The values of one row, in [`header`] order; `q4[a]` is the l = 4 shape moment of liquid `a`
+/// ([`crate::measure::shape::cubic_harmonic_q4`]).
+pub fn row(o: &Observables, q4: &[f64]) -> Vec<f64> {
     let mut r = vec![
         o.time_s,
         o.dt_s,
@@ -49,8 +52,9 @@ pub fn row(o: &Observables) -> Vec<f64> {
         o.momentum_kg_m_s[2],
         o.max_speed_m_s,
         o.max_density_deviation,
+        o.max_compression,
     ];
-    for p in &o.phases {
+    for (a, p) in o.phases.iter().enumerate() {
         r.push(p.count as f64);
         r.push(p.mass_kg);
         for v in [
@@ -63,8 +67,23 @@ pub fn row(o: &Observables) -> Vec<f64> {
             r.extend_from_slice(&v);
         }
         r.push(p.kinetic_energy_j);
+        r.push(q4.get(a).copied().unwrap_or(f64::NAN));
     }
     r
+}
+
+/// The l = 4 shape moment of each liquid phase of a simulation [-].
+pub fn phase_q4(sim: &solver::Simulation) -> Vec<f64> {
+    let p = &sim.particles;
+    (0..sim.model.n_liquids)
+        .map(|a| {
+            let pts: Vec<[f64; 3]> = (0..p.n_fluid)
+                .filter(|&i| p.phase[i] as usize == a)
+                .map(|i| p.pos[i].into())
+                .collect();
+            crate::measure::shape::cubic_harmonic_q4(&pts)
+        })
+        .collect()
 }
 
 /// Appends rows to a CSV file; each row is written whole and flushed, so a crash never leaves
@@ -92,8 +111,8 @@ impl TimeseriesWriter {
     }
 
     /// Writes one row and flushes it.
-    pub fn write(&mut self, o: &Observables) -> std::io::Result<()> {
-        let line: Vec<String> = row(o).iter().map(|v| format!("{v:e}")).collect();
+    pub fn write(&mut self, o: &Observables, q4: &[f64]) -> std::io::Result<()> {
+        let line: Vec<String> = row(o, q4).iter().map(|v| format!("{v:e}")).collect();
         // one write call for the whole line: the buffer never splits a row between flushes
         self.out
             .write_all(format!("{}\n", line.join(",")).as_bytes())?;

@@ -1,0 +1,144 @@
+//! Checkpoints: everything a run's next step depends on, so that a resumed run continues bit for
+//! bit as if it had never stopped.
+//!
+//! The neighbour lists are not stored: they are rebuilt from the positions at the last build
+//! (`Particles::x_ref`) in the stored particle order, which reproduces them exactly. The model
+//! is rebuilt from the scene. Writing the bytes is the caller's business (`verify` uses a
+//! compact binary encoding and an atomic rename).
+
+use crate::error::SimError;
+use crate::model::Model;
+use crate::neighbours::NeighbourSearch;
+use crate::scene::Scene;
+use crate::simulation::{Simulation, StepTimings};
+use crate::state::Particles;
+use serde::{Deserialize, Serialize};
+
+/// The state of a simulation between two steps.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct Checkpoint {
+    /// Format version of this struct.
+    pub version: u32,
+    /// The scene (resolved); encoded as its TOML text, so that compact binary encodings that
+    /// cannot read self-describing enums still round-trip it.
+    #[serde(with = "scene_as_toml")]
+    pub scene: Scene,
+    /// Particles, in their current (cell-sorted) order.
+    pub particles: Particles,
+    /// Per wall particle: no-slip?
+    pub wall_no_slip: Vec<bool>,
+    /// Simulated time [s].
+    pub time_s: f64,
+    /// Steps taken.
+    pub step: u64,
+    /// Last step [s].
+    pub last_dt_s: f64,
+    /// Largest `|v|²` of the state [m²/s²] (the next step's CFL limit).
+    pub max_speed2: f64,
+    /// Largest `|a|²` of the state [m²/s⁴] (the next step's force limit).
+    pub max_acc2: f64,
+    /// Stable step of the initial state [s].
+    pub first_dt_s: f64,
+    /// Neighbour-list builds so far.
+    pub builds: u64,
+    /// Wall-clock time per part of the step so far [s].
+    pub timings: StepTimings,
+}
+
+mod scene_as_toml {
+    use crate::scene::Scene;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(scene: &Scene, s: S) -> Result<S::Ok, S::Error> {
+        let text = toml::to_string(scene).map_err(serde::ser::Error::custom)?;
+        s.serialize_str(&text)
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Scene, D::Error> {
+        let text = String::deserialize(d)?;
+        toml::from_str(&text).map_err(serde::de::Error::custom)
+    }
+}
+
+/// Current [`Checkpoint::version`].
+pub const VERSION: u32 = 1;
+
+impl Simulation {
+    /// The state between two steps.
+    pub fn checkpoint(&self) -> Checkpoint {
+        Checkpoint {
+            version: VERSION,
+            scene: self.model.scene.clone(),
+            particles: self.particles.clone(),
+            wall_no_slip: self.wall_no_slip.clone(),
+            time_s: self.time_s,
+            step: self.step,
+            last_dt_s: self.last_dt_s,
+            max_speed2: self.max_speed2,
+            max_acc2: self.max_acc2,
+            first_dt_s: self.first_dt_s,
+            builds: self.search.builds,
+            timings: self.timings,
+        }
+    }
+
+    /// Continues from a checkpoint.
+    pub fn resume(c: Checkpoint) -> Result<Simulation, SimError> {
+        if c.version != VERSION {
+            return Err(crate::scene::SceneError::invalid(
+                "checkpoint.version",
+                c.version,
+                format!("this build reads version {VERSION}"),
+            )
+            .into());
+        }
+        c.scene.validate()?;
+        let model = Model::from_scene(&c.scene)?;
+        let (fresh, _, inventory) = crate::setup::build_particles(&c.scene, &model)?;
+        let p = c.particles;
+        if p.n_fluid != fresh.n_fluid
+            || p.len() != fresh.len()
+            || c.wall_no_slip.len() != p.n_wall()
+        {
+            return Err(crate::scene::SceneError::invalid(
+                "checkpoint.particles",
+                format!("{} fluid / {} total", p.n_fluid, p.len()),
+                format!(
+                    "the scene builds {} fluid / {} total particles",
+                    fresh.n_fluid,
+                    fresh.len()
+                ),
+            )
+            .into());
+        }
+        let far = if model.effects.interfacial_tension {
+            model.r_e_m
+        } else {
+            model.support_m
+        };
+        let skin = c.scene.discretisation.neighbour_skin_over_l0 * model.l0_m;
+        let mut search = NeighbourSearch::new(model.support_m, far, skin);
+        // the lists of the last build: positions then, same order
+        let mut at_build = p.x_ref.clone();
+        at_build.extend_from_slice(&p.pos[p.n_fluid..]);
+        search
+            .build(&at_build, p.n_fluid)
+            .map_err(|source| SimError::Escaped {
+                step: c.step,
+                source,
+            })?;
+        search.builds = c.builds;
+        let n_fluid = p.n_fluid;
+        Ok(Simulation::from_parts(
+            model,
+            p,
+            search,
+            c.wall_no_slip,
+            inventory,
+            (c.time_s, c.step, c.last_dt_s),
+            (c.max_speed2, c.max_acc2, c.first_dt_s),
+            c.timings,
+            n_fluid,
+        ))
+    }
+}

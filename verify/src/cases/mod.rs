@@ -1,0 +1,23 @@
+//! The paper checks, one module each.
+
+mod cube_drop;
+mod doublet;
+mod hard_cases;
+pub mod paper_values;
+mod plate_eq23;
+pub mod scenes;
+mod water_oil_teflon;
+
+use crate::suite::Case;
+
+/// Every case, in report order.
+pub fn all() -> Vec<Box<dyn Case>> {
+    vec![
+        Box::new(cube_drop::CubeDrop),
+        Box::new(doublet::Doublet(doublet::Pair::Equal)),
+        Box::new(doublet::Doublet(doublet::Pair::MatteSlag)),
+        Box::new(plate_eq23::PlateEq23),
+        Box::new(water_oil_teflon::WaterOilTeflon),
+        Box::new(hard_cases::HardCases),
+    ]
+}

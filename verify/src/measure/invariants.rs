@@ -1,0 +1,156 @@
+//! Invariants of a healthy run, measured on its outputs: one connected body, no clumping, no
+//! particle inside a wall, conserved counts, mass and momentum, bounded energy.
+
+use solver::neighbours::NeighbourSearch;
+use solver::scene::{Scene, WallShape};
+use solver::state::Vec3;
+
+/// Number of connected bodies: particles closer than `link_m` [m] belong to the same body.
+pub fn components(points: &[[f64; 3]], link_m: f64) -> usize {
+    if points.is_empty() {
+        return 0;
+    }
+    let mut search = NeighbourSearch::new(link_m, link_m, 0.0);
+    let pos: Vec<Vec3> = points.iter().map(|p| Vec3::from(*p)).collect();
+    let Ok(order) = search.sort_order(&pos) else {
+        return usize::MAX; // a particle outside the grid: certainly not one body
+    };
+    let sorted: Vec<Vec3> = order.iter().map(|&i| pos[i as usize]).collect();
+    if search.build(&sorted, sorted.len()).is_err() {
+        return usize::MAX;
+    }
+    // union–find over the sorted indices
+    let mut parent: Vec<usize> = (0..sorted.len()).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for i in 0..sorted.len() {
+        for &j in search.lists.near(i) {
+            let (a, b) = (root(&mut parent, i), root(&mut parent, j as usize));
+            if a != b {
+                parent[a.max(b)] = a.min(b);
+            }
+        }
+    }
+    (0..sorted.len())
+        .filter(|&i| root(&mut parent, i) == i)
+        .count()
+}
+
+/// Fraction of particles whose nearest neighbour is closer than half a spacing `l0_m` [m]:
+/// a sign of particles clumping into clusters (the pairing instability).
+pub fn clumped_fraction(points: &[[f64; 3]], l0_m: f64) -> f64 {
+    if points.len() < 2 {
+        return 0.0;
+    }
+    let r = 0.5 * l0_m;
+    let mut search = NeighbourSearch::new(r, r, 0.0);
+    let pos: Vec<Vec3> = points.iter().map(|p| Vec3::from(*p)).collect();
+    let Ok(order) = search.sort_order(&pos) else {
+        return 1.0;
+    };
+    let sorted: Vec<Vec3> = order.iter().map(|&i| pos[i as usize]).collect();
+    if search.build(&sorted, sorted.len()).is_err() {
+        return 1.0;
+    }
+    let clumped = (0..sorted.len())
+        .filter(|&i| !search.lists.near(i).is_empty())
+        .count();
+    clumped as f64 / points.len() as f64
+}
+
+/// Liquid particles inside a wall of `scene`: deeper than half a spacing past a face, and more
+/// than one spacing inside a disk's rim (a lattice disk's rim is a staircase within l0/√2 of
+/// the circle, along which liquid may legitimately run down the side).
+pub fn inside_walls(points: &[[f64; 3]], scene: &Scene) -> usize {
+    let l0 = scene.discretisation.l0;
+    let shapes: Vec<(WallShape, f64)> = scene
+        .walls
+        .iter()
+        .map(|w| {
+            let t = scene.wall_layers(w) as f64 * l0;
+            let shape = match w.shape.clone() {
+                WallShape::Disk { center, radius } => WallShape::Disk {
+                    center,
+                    radius: radius - l0,
+                },
+                s => s,
+            };
+            (shape, t)
+        })
+        .collect();
+    points
+        .iter()
+        .filter(|p| {
+            shapes
+                .iter()
+                .any(|(s, t)| s.solid_contains(**p, *t, 0.5 * l0))
+        })
+        .count()
+}
+
+/// The largest growth of `energy` [J] after the first `skip` fraction of the series, above its
+/// value there.
+pub fn energy_growth(energy: &[f64], skip: f64) -> f64 {
+    let from = ((energy.len() as f64 * skip) as usize).min(energy.len().saturating_sub(1));
+    let Some(&e0) = energy.get(from) else {
+        return f64::NAN;
+    };
+    energy[from..].iter().fold(0.0f64, |g, &e| g.max(e - e0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lattice(n: i32, offset: f64) -> Vec<[f64; 3]> {
+        let mut v = Vec::new();
+        for k in 0..n {
+            for j in 0..n {
+                for i in 0..n {
+                    v.push([i as f64 + offset, j as f64, k as f64]);
+                }
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn two_separate_blocks_are_two_bodies_and_one_block_is_one() {
+        // spacing 1, link 1.5: a block is connected; a second block 3 spacings away is not
+        let mut pts = lattice(4, 0.0);
+        assert_eq!(components(&pts, 1.5), 1);
+        pts.extend(lattice(4, 7.0));
+        assert_eq!(components(&pts, 1.5), 2);
+        pts.push([100.0, 100.0, 100.0]);
+        assert_eq!(components(&pts, 1.5), 3);
+        assert_eq!(components(&[], 1.5), 0);
+    }
+
+    #[test]
+    fn clumping_counts_pairs_closer_than_half_a_spacing() {
+        let mut pts = lattice(5, 0.0);
+        assert_eq!(clumped_fraction(&pts, 1.0), 0.0);
+        // move the particle at (0, j, k) to (0.8, j, k), 0.2 from (1, j, k), for 10 rows:
+        // 20 particles are clumped
+        for k in 0..2 {
+            for j in 0..5 {
+                pts[(k * 25 + j * 5) as usize][0] = 0.8;
+            }
+        }
+        let f = clumped_fraction(&pts, 1.0);
+        assert!((f - 20.0 / 125.0).abs() < 1e-12, "{f}");
+    }
+
+    #[test]
+    fn energy_growth_after_the_transient() {
+        let e = [5.0, 9.0, 3.0, 3.5, 3.2, 3.4];
+        // from index 2 (skip 1/3): growth above 3.0 is 0.5
+        assert!((energy_growth(&e, 0.34) - 0.5).abs() < 1e-12);
+        assert_eq!(energy_growth(&[1.0, 0.5, 0.2], 0.0), 0.0);
+    }
+}

@@ -1,0 +1,214 @@
+//! `summary.csv` (machine-readable, also the regression baseline format) and `summary.md` (what
+//! a reviewer reads first).
+
+use crate::suite::{Case, Fidelity, Metric};
+use std::fmt::Write as _;
+use std::path::Path;
+
+const COLUMNS: [&str; 13] = [
+    "case",
+    "name",
+    "unit",
+    "value",
+    "reference",
+    "paper",
+    "error",
+    "tolerance",
+    "tolerance_source",
+    "pass",
+    "particles",
+    "wall_time_s",
+    "note",
+];
+
+fn opt(v: Option<f64>) -> String {
+    v.map(|x| format!("{x:e}")).unwrap_or_default()
+}
+
+/// Writes metrics as CSV.
+pub fn write_csv(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(COLUMNS)?;
+    for m in metrics {
+        w.write_record([
+            m.case.clone(),
+            m.name.clone(),
+            m.unit.clone(),
+            format!("{:e}", m.value),
+            opt(m.reference),
+            opt(m.paper),
+            opt(m.error()),
+            opt(m.tolerance.as_ref().map(|t| t.abs)),
+            m.tolerance
+                .as_ref()
+                .map(|t| t.source.clone())
+                .unwrap_or_default(),
+            m.pass()
+                .map(|p| if p { "pass" } else { "FAIL" }.to_string())
+                .unwrap_or_default(),
+            m.particles.to_string(),
+            format!("{:.1}", m.wall_time_s),
+            m.note.clone(),
+        ])?;
+    }
+    crate::output::atomic_write(path, &w.into_inner()?)?;
+    Ok(())
+}
+
+/// A number with 4 significant digits (or a dash).
+pub fn sig(v: f64) -> String {
+    if !v.is_finite() {
+        return if v.is_nan() {
+            "—".into()
+        } else {
+            format!("{v}")
+        };
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    if (-3..5).contains(&mag) {
+        let decimals = (3 - mag).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.3e}")
+    }
+}
+
+fn sig_opt(v: Option<f64>) -> String {
+    v.map(sig).unwrap_or_else(|| "—".into())
+}
+
+/// Writes `summary.md`: per case its source, effects, resolution and a table of metrics.
+pub fn write_markdown(
+    path: &Path,
+    fidelity: Fidelity,
+    cases: &[&dyn Case],
+    metrics: &[Metric],
+    regressions: Option<&[crate::suite::compare::Regression]>,
+) -> anyhow::Result<()> {
+    let mut s = String::new();
+    let judged: Vec<&Metric> = metrics.iter().filter(|m| m.pass().is_some()).collect();
+    let passed = judged.iter().filter(|m| m.pass() == Some(true)).count();
+    let _ = writeln!(s, "# Verification summary\n");
+    let _ = writeln!(
+        s,
+        "Fidelity **{}**, git revision `{}`. {passed} of {} judged metrics within tolerance; {} \
+         reported without a reference. Every reference value is computed by the code \
+         (`verify/src/analytic`); \"paper\" is what the paper's own simulation reached \
+         (`reference/paper_values.toml`). Error = value − reference.\n",
+        fidelity.name(),
+        env!("GIT_REVISION"),
+        judged.len(),
+        metrics.len() - judged.len()
+    );
+    if let Some(r) = regressions {
+        if r.is_empty() {
+            let _ = writeln!(
+                s,
+                "Regression check against the baseline: no metric worse.\n"
+            );
+        } else {
+            let _ = writeln!(s, "**Regressions against the baseline:**\n");
+            for x in r {
+                let _ = writeln!(s, "- {} / {}: {}", x.case, x.name, x.message);
+            }
+            s.push('\n');
+        }
+    }
+    for case in cases {
+        let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
+        let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
+        let _ = writeln!(s, "Source: {}.  ", case.source());
+        let _ = writeln!(s, "Effects: {}.  ", case.effects().describe());
+        let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
+        if ms.is_empty() {
+            let _ = writeln!(s, "_No results: the case was not run._\n");
+            continue;
+        }
+        let _ = writeln!(s, "| metric | unit | reference | paper | this project | error | tolerance | pass | particles | wall time [s] |");
+        let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+        for m in &ms {
+            let pass = match m.pass() {
+                Some(true) => "pass",
+                Some(false) => "**FAIL**",
+                None => "—",
+            };
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
+                m.name,
+                m.unit,
+                sig_opt(m.reference),
+                sig_opt(m.paper),
+                sig(m.value),
+                sig_opt(m.error()),
+                m.tolerance
+                    .as_ref()
+                    .map(|t| format!("±{}", sig(t.abs)))
+                    .unwrap_or_else(|| "—".into()),
+                pass,
+                m.particles,
+                m.wall_time_s
+            );
+        }
+        let notes: Vec<String> = ms
+            .iter()
+            .filter(|m| !m.note.is_empty() || m.tolerance.is_some())
+            .map(|m| {
+                let tol = m
+                    .tolerance
+                    .as_ref()
+                    .map(|t| format!(" Tolerance: {}.", t.source))
+                    .unwrap_or_default();
+                format!("- *{}*: {}{}", m.name, m.note, tol)
+            })
+            .collect();
+        if !notes.is_empty() {
+            let _ = writeln!(s, "\nNotes:\n");
+            for n in notes {
+                let _ = writeln!(s, "{n}");
+            }
+        }
+        let plots = plots_of(path.parent().unwrap_or(Path::new(".")), case.name());
+        if !plots.is_empty() {
+            let _ = writeln!(s, "\nPlots: {}", plots.join(", "));
+        }
+        s.push('\n');
+    }
+    crate::output::atomic_write(path, s.as_bytes())?;
+    Ok(())
+}
+
+/// Links to the case's PNG plots, relative to the summary.
+fn plots_of(out: &Path, case: &str) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(out.join(case))
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().to_string())
+                .filter(|n| n.ends_with(".png"))
+                .collect()
+        })
+        .unwrap_or_default();
+    v.sort();
+    v.into_iter()
+        .map(|n| format!("[{n}]({case}/{n})"))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn four_significant_digits() {
+        assert_eq!(sig(1.21352), "1.214");
+        assert_eq!(sig(0.00121352), "0.001214");
+        assert_eq!(sig(48.7999), "48.80");
+        assert_eq!(sig(12345.6), "12346");
+        assert_eq!(sig(123456.0), "1.235e5");
+        assert_eq!(sig(f64::NAN), "—");
+        assert_eq!(sig(-0.5), "-0.5000");
+    }
+}

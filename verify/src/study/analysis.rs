@@ -1,0 +1,353 @@
+//! The study's analysis: Pareto fronts, convergence orders, plots and the written conclusions.
+
+use super::grid::{Problem, Variant};
+use super::points::PointResult;
+use crate::report::plot::{self, Plot, Series, SeriesKind};
+use crate::report::summary::sig;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Indices of the points on the Pareto front of |error| against wall time (no other point is
+/// both faster and more accurate), fastest first.
+pub fn pareto_front(points: &[&PointResult]) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].relative_error.is_finite())
+        .collect();
+    idx.sort_by(|&a, &b| points[a].wall_time_s.total_cmp(&points[b].wall_time_s));
+    let mut best = f64::INFINITY;
+    let mut front = Vec::new();
+    for i in idx {
+        let e = points[i].relative_error.abs();
+        if e < best {
+            best = e;
+            front.push(i);
+        }
+    }
+    front
+}
+
+/// Least-squares order `p` of `|error| ∝ l0^p` and its R², from at least three points.
+pub fn convergence_order(points: &[&PointResult]) -> Option<(f64, f64)> {
+    let xy: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| p.relative_error.is_finite() && p.relative_error != 0.0)
+        .map(|p| (p.l0_m.ln(), p.relative_error.abs().ln()))
+        .collect();
+    if xy.len() < 3 {
+        return None;
+    }
+    let n = xy.len() as f64;
+    let (mx, my) = (
+        xy.iter().map(|p| p.0).sum::<f64>() / n,
+        xy.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = xy.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = xy.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let syy: f64 = xy.iter().map(|p| (p.1 - my).powi(2)).sum();
+    if sxx == 0.0 {
+        return None;
+    }
+    let slope = sxy / sxx;
+    let r2 = if syy > 0.0 {
+        sxy * sxy / (sxx * syy)
+    } else {
+        1.0
+    };
+    Some((slope, r2))
+}
+
+/// Writes `points.csv`, the plots and `summary.md` into `out`.
+pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyhow::Result<()> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "problem",
+        "variant",
+        "kernel",
+        "h_over_l0",
+        "re_over_l0",
+        "density",
+        "resolution",
+        "l0_m",
+        "particles",
+        "value",
+        "reference",
+        "relative_error",
+        "wall_time_s",
+        "particle_steps_per_second",
+        "mean_neighbours",
+        "peak_memory_bytes",
+        "status",
+    ])?;
+    for r in results {
+        let v = &r.point.variant;
+        w.write_record([
+            r.point.problem.name().to_string(),
+            v.label(),
+            v.kernel.name().to_string(),
+            v.h_over_l0.to_string(),
+            v.re_over_l0.to_string(),
+            if v.continuity {
+                "continuity+shepard"
+            } else {
+                "summation"
+            }
+            .to_string(),
+            r.point.resolution.to_string(),
+            format!("{:e}", r.l0_m),
+            r.particles.to_string(),
+            format!("{:e}", r.value),
+            format!("{:e}", r.reference),
+            format!("{:e}", r.relative_error),
+            format!("{:.3}", r.wall_time_s),
+            format!("{:.4e}", r.particle_steps_per_second),
+            format!("{:.1}", r.mean_neighbours),
+            r.peak_memory_bytes
+                .map(|b| b.to_string())
+                .unwrap_or_default(),
+            r.status.clone(),
+        ])?;
+    }
+    crate::output::atomic_write(&out.join("points.csv"), &w.into_inner()?)?;
+
+    let mut md = String::new();
+    let _ = writeln!(md, "# Accuracy–cost study\n");
+    let _ = writeln!(
+        md,
+        "Each point is one run in its own process (wall time and peak memory are its own). Error = \
+         (value − reference)/reference: the cube drop's l = 4 period (damped-cosine fit of the shape \
+         moment Q4) against Lamb, the sessile matte drop's equilibrium height against the \
+         Young–Laplace solution. Data: `points.csv`. Variants are labelled `kernel h/l0 r_e/l0 \
+         density`.\n"
+    );
+    for problem in [Problem::CubeDrop, Problem::SessileDrop] {
+        let pts: Vec<&PointResult> = results
+            .iter()
+            .filter(|r| r.point.problem == problem)
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let front = pareto_front(&pts);
+        let _ = writeln!(
+            md,
+            "## {} (reference {})\n",
+            problem.name(),
+            sig(pts[0].reference)
+        );
+        let _ = writeln!(md, "| variant | resolution | particles | error | wall time [s] | particle-steps/s | neighbours | memory [B/particle] | Pareto | status |");
+        let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|");
+        for (i, r) in pts.iter().enumerate() {
+            let mem = r
+                .peak_memory_bytes
+                .map(|b| format!("{:.0}", b as f64 / r.particles.max(1) as f64))
+                .unwrap_or_else(|| "—".into());
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {:+.2} % | {:.1} | {:.3e} | {:.0} | {mem} | {} | {} |",
+                r.point.variant.label(),
+                r.point.resolution,
+                r.particles,
+                100.0 * r.relative_error,
+                r.wall_time_s,
+                r.particle_steps_per_second,
+                r.mean_neighbours,
+                if front.contains(&i) { "**yes**" } else { "" },
+                r.status
+            );
+        }
+        let _ = writeln!(
+            md,
+            "\nConvergence order in l0 (least squares of ln|error| on ln l0):\n"
+        );
+        let _ = writeln!(md, "| variant | order | R² |");
+        let _ = writeln!(md, "|---|---|---|");
+        let mut order_series = Vec::new();
+        let mut scatter = Vec::new();
+        for (k, v) in variants.iter().enumerate() {
+            let vp: Vec<&PointResult> = pts
+                .iter()
+                .copied()
+                .filter(|r| r.point.variant == *v)
+                .collect();
+            match convergence_order(&vp) {
+                Some((p, r2)) => {
+                    let _ = writeln!(md, "| {} | {p:.2} | {r2:.2} |", v.label());
+                }
+                None => {
+                    let _ = writeln!(md, "| {} | — (fewer than 3 measured points) | |", v.label());
+                }
+            }
+            let finite: Vec<&&PointResult> = vp
+                .iter()
+                .filter(|r| r.relative_error.is_finite() && r.relative_error != 0.0)
+                .collect();
+            order_series.push(Series {
+                label: v.label(),
+                points: finite
+                    .iter()
+                    .map(|r| (r.l0_m.log10(), r.relative_error.abs().log10()))
+                    .collect(),
+                kind: SeriesKind::LineMarkers,
+                color: k,
+            });
+            scatter.push(Series {
+                label: v.label(),
+                points: finite
+                    .iter()
+                    .map(|r| {
+                        (
+                            r.wall_time_s.max(1e-3).log10(),
+                            r.relative_error.abs().log10(),
+                        )
+                    })
+                    .collect(),
+                kind: SeriesKind::Markers,
+                color: k,
+            });
+        }
+        scatter.push(Series {
+            label: "Pareto front".into(),
+            points: front
+                .iter()
+                .map(|&i| {
+                    (
+                        pts[i].wall_time_s.max(1e-3).log10(),
+                        pts[i].relative_error.abs().log10(),
+                    )
+                })
+                .collect(),
+            kind: SeriesKind::Line,
+            color: variants.len(),
+        });
+        plot::draw(
+            &Plot {
+                title: format!("{}: error against wall time (2 cores)", problem.name()),
+                x_label: "log10(wall time [s])".into(),
+                y_label: "log10(|relative error|)".into(),
+                series: scatter,
+                x_range: None,
+                y_range: None,
+                hlines: vec![],
+            },
+            &out.join(format!("{}_error_vs_time", problem.name())),
+        )?;
+        plot::draw(
+            &Plot {
+                title: format!("{}: convergence in l0", problem.name()),
+                x_label: "log10(l0 [m])".into(),
+                y_label: "log10(|relative error|)".into(),
+                series: order_series,
+                x_range: None,
+                y_range: None,
+                hlines: vec![],
+            },
+            &out.join(format!("{}_convergence", problem.name())),
+        )?;
+        let _ = writeln!(md, "\n{}\n", words(&pts, &front, variants));
+        let _ = writeln!(md, "Plots: [{n}_error_vs_time.png]({n}_error_vs_time.png), [{n}_convergence.png]({n}_convergence.png)\n", n = problem.name());
+    }
+    crate::output::atomic_write(&out.join("summary.md"), md.as_bytes())?;
+    Ok(())
+}
+
+/// Conclusions in words, drawn from the data: the front, the cheapest point at 5 % and 2 %, and
+/// the variants that never pay.
+fn words(pts: &[&PointResult], front: &[usize], variants: &[Variant]) -> String {
+    let mut s = String::new();
+    let on_front: Vec<String> = front
+        .iter()
+        .map(|&i| {
+            format!(
+                "{} at resolution {} ({:+.1} %, {:.1} s)",
+                pts[i].point.variant.label(),
+                pts[i].point.resolution,
+                100.0 * pts[i].relative_error,
+                pts[i].wall_time_s
+            )
+        })
+        .collect();
+    let _ = write!(
+        s,
+        "**Worth it** (the Pareto front, fastest first): {}. ",
+        on_front.join("; ")
+    );
+    for limit in [0.05, 0.02] {
+        let cheapest = pts
+            .iter()
+            .filter(|r| r.relative_error.abs() <= limit)
+            .min_by(|a, b| a.wall_time_s.total_cmp(&b.wall_time_s));
+        match cheapest {
+            Some(r) => {
+                let _ = write!(
+                    s,
+                    "The cheapest point within {:.0} % is {} at resolution {} ({:.1} s). ",
+                    limit * 100.0,
+                    r.point.variant.label(),
+                    r.point.resolution,
+                    r.wall_time_s
+                );
+            }
+            None => {
+                let _ = write!(s, "No point reaches {:.0} %. ", limit * 100.0);
+            }
+        }
+    }
+    let never: Vec<String> = variants
+        .iter()
+        .filter(|v| !front.iter().any(|&i| pts[i].point.variant == **v))
+        .map(|v| v.label())
+        .collect();
+    if !never.is_empty() {
+        let _ = write!(s, "**Not worth it here** (never on the front: another setting is both faster and more accurate): {}.", never.join(", "));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::grid::{Point, Problem, Variant};
+
+    fn result(l0: f64, err: f64, time: f64) -> PointResult {
+        PointResult {
+            point: Point {
+                problem: Problem::CubeDrop,
+                variant: Variant::DEFAULT,
+                resolution: 10,
+            },
+            l0_m: l0,
+            particles: 1000,
+            value: 1.0 + err,
+            reference: 1.0,
+            relative_error: err,
+            wall_time_s: time,
+            particle_steps_per_second: 1e6,
+            mean_neighbours: 30.0,
+            peak_memory_bytes: None,
+            status: "completed".into(),
+        }
+    }
+
+    #[test]
+    fn order_of_a_second_order_series_is_two() {
+        let pts: Vec<PointResult> = [1.0, 0.5, 0.25]
+            .iter()
+            .map(|&l| result(l, 0.3 * l * l, 1.0 / l))
+            .collect();
+        let refs: Vec<&PointResult> = pts.iter().collect();
+        let (p, r2) = convergence_order(&refs).unwrap();
+        assert!((p - 2.0).abs() < 1e-12 && (r2 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn pareto_keeps_only_points_no_other_beats() {
+        let pts = [
+            result(1.0, 0.10, 1.0),
+            result(1.0, 0.20, 2.0),
+            result(1.0, -0.05, 3.0),
+            result(1.0, f64::NAN, 0.5),
+        ];
+        let refs: Vec<&PointResult> = pts.iter().collect();
+        assert_eq!(pareto_front(&refs), vec![0, 2]);
+    }
+}

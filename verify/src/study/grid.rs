@@ -1,0 +1,304 @@
+//! The study's points: problems, variants, resolutions, and their scenes.
+
+use crate::analytic::{lamb, young_laplace};
+use crate::cases::scenes;
+use serde::{Deserialize, Serialize};
+use solver::kernel::KernelKind;
+use solver::Scene;
+
+/// A problem with an analytic answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Problem {
+    /// 1 mm matte cube, zero gravity: relative error of the l = 4 period against Lamb.
+    CubeDrop,
+    /// Matte drop (2 mm diameter) on a θ = 90° plate under gravity: relative error of the
+    /// equilibrium height against the axisymmetric Young–Laplace solution.
+    SessileDrop,
+}
+
+impl Problem {
+    /// Name used in folders and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Problem::CubeDrop => "cube_drop",
+            Problem::SessileDrop => "sessile_drop",
+        }
+    }
+
+    /// The analytic reference value: period [s] or height [m].
+    pub fn reference(self) -> f64 {
+        match self {
+            Problem::CubeDrop => {
+                lamb::lamb_period(4, SIGMA, RHO, lamb::cube_equivalent_radius(CUBE_SIDE_M))
+            }
+            Problem::SessileDrop => young_laplace::sessile_drop(drop_volume(), RHO, SIGMA, 90.0, G)
+                .map(|d| d.height_m)
+                .unwrap_or(f64::NAN),
+        }
+    }
+
+    /// Resolutions: particles along the cube side, or drop radius over `l0`.
+    pub fn resolutions(self, grid: Grid) -> Vec<usize> {
+        match (self, grid) {
+            (Problem::CubeDrop, Grid::Reduced) => vec![8, 10],
+            (Problem::CubeDrop, _) => vec![10, 14, 20, 28],
+            (Problem::SessileDrop, Grid::Reduced) => vec![4, 5],
+            (Problem::SessileDrop, _) => vec![5, 7, 10, 14],
+        }
+    }
+
+    /// `l0` [m] at a resolution.
+    pub fn l0(self, resolution: usize) -> f64 {
+        match self {
+            Problem::CubeDrop => CUBE_SIDE_M / resolution as f64,
+            Problem::SessileDrop => DROP_RADIUS_M / resolution as f64,
+        }
+    }
+}
+
+/// The discretisation choices a variant fixes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Variant {
+    /// Kernel.
+    pub kernel: KernelKind,
+    /// `h/l0` [-].
+    pub h_over_l0: f64,
+    /// `r_e/l0` [-].
+    pub re_over_l0: f64,
+    /// Continuity density with Shepard re-initialisation every 20 steps instead of summation.
+    pub continuity: bool,
+}
+
+impl Variant {
+    /// The project's defaults.
+    pub const DEFAULT: Variant = Variant {
+        kernel: KernelKind::WendlandC2,
+        h_over_l0: 1.05,
+        re_over_l0: 4.2,
+        continuity: false,
+    };
+
+    /// A short label, e.g. `wendland_c2 h1.05 re4.2 sum`.
+    pub fn label(&self) -> String {
+        format!(
+            "{} h{} re{} {}",
+            self.kernel.name(),
+            self.h_over_l0,
+            self.re_over_l0,
+            if self.continuity { "cont" } else { "sum" }
+        )
+    }
+
+    /// A folder-safe label.
+    pub fn id(&self) -> String {
+        self.label().replace(' ', "_")
+    }
+}
+
+/// How many points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "snake_case")]
+pub enum Grid {
+    /// Two variants × two coarse resolutions per problem: the test suite's.
+    Reduced,
+    /// The default and each single change from it (3 other kernels, h/l0 = 1.3, r_e = 2.1 and
+    /// 3.1 l0, continuity density) × four resolutions: 8 variants × 4 × 2 problems.
+    Standard,
+    /// The full factorial: 4 kernels × h/l0 ∈ {1.05, 1.3} × r_e ∈ {2.1, 3.1, 4.2} × 2 density
+    /// schemes × four resolutions × 2 problems (hours).
+    Full,
+}
+
+impl Grid {
+    /// The variants of the grid.
+    pub fn variants(self) -> Vec<Variant> {
+        let d = Variant::DEFAULT;
+        match self {
+            Grid::Reduced => vec![
+                d,
+                Variant {
+                    re_over_l0: 2.1,
+                    ..d
+                },
+            ],
+            Grid::Standard => {
+                let mut v = vec![d];
+                for k in KernelKind::ALL.into_iter().filter(|&k| k != d.kernel) {
+                    v.push(Variant { kernel: k, ..d });
+                }
+                v.push(Variant {
+                    h_over_l0: 1.3,
+                    ..d
+                });
+                v.push(Variant {
+                    re_over_l0: 2.1,
+                    ..d
+                });
+                v.push(Variant {
+                    re_over_l0: 3.1,
+                    ..d
+                });
+                v.push(Variant {
+                    continuity: true,
+                    ..d
+                });
+                v
+            }
+            Grid::Full => {
+                let mut v = Vec::new();
+                for kernel in KernelKind::ALL {
+                    for h_over_l0 in [1.05, 1.3] {
+                        for re_over_l0 in [2.1, 3.1, 4.2] {
+                            for continuity in [false, true] {
+                                v.push(Variant {
+                                    kernel,
+                                    h_over_l0,
+                                    re_over_l0,
+                                    continuity,
+                                });
+                            }
+                        }
+                    }
+                }
+                v
+            }
+        }
+    }
+
+    /// Every point of the grid, both problems.
+    pub fn points(self) -> Vec<Point> {
+        let mut out = Vec::new();
+        for problem in [Problem::CubeDrop, Problem::SessileDrop] {
+            for variant in self.variants() {
+                for resolution in problem.resolutions(self) {
+                    out.push(Point {
+                        problem,
+                        variant,
+                        resolution,
+                    });
+                }
+            }
+        }
+        out
+    }
+}
+
+/// One run of the study.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Point {
+    /// The problem.
+    pub problem: Problem,
+    /// The variant.
+    pub variant: Variant,
+    /// Particles along the cube side, or drop radius over `l0`.
+    pub resolution: usize,
+}
+
+const RHO: f64 = 4500.0;
+const SIGMA: f64 = 0.40;
+const MU: f64 = 3.13e-3;
+const G: f64 = 9.8;
+const CUBE_SIDE_M: f64 = 1.0e-3;
+const DROP_RADIUS_M: f64 = 1.0e-3;
+
+/// The sessile drop's volume [m³]: a hemisphere of radius 1 mm (its shape at θ = 90° without
+/// gravity, which is where it starts).
+fn drop_volume() -> f64 {
+    2.0 / 3.0 * std::f64::consts::PI * DROP_RADIUS_M.powi(3)
+}
+
+impl Point {
+    /// Folder name.
+    pub fn id(&self) -> String {
+        format!(
+            "{}/{}/n{}",
+            self.problem.name(),
+            self.variant.id(),
+            self.resolution
+        )
+    }
+
+    /// `l0` [m].
+    pub fn l0(&self) -> f64 {
+        self.problem.l0(self.resolution)
+    }
+
+    /// The scene of the point.
+    pub fn scene(&self) -> Scene {
+        let v = &self.variant;
+        let l0 = self.l0();
+        let density = if v.continuity {
+            "[density]\nscheme = \"continuity\"\nreinit = \"shepard\"\nreinit_every = 20\n"
+        } else {
+            ""
+        };
+        let disc = format!(
+            "kernel = \"{}\"\nh_over_l0 = {}\nre_over_l0 = {}\n",
+            v.kernel.name(),
+            v.h_over_l0,
+            v.re_over_l0
+        );
+        let matte = ("matte", RHO, MU, SIGMA);
+        let text = match self.problem {
+            Problem::CubeDrop => {
+                let h = 0.5 * CUBE_SIDE_M;
+                // c² = 150 m²/s² as the paper's cube drop; 3.5 ms ≈ 3 periods
+                let mut t = scenes::header(
+                    l0,
+                    150f64.sqrt(),
+                    3.5e-3,
+                    1.0e-5,
+                    None,
+                    false,
+                    "study: cube drop",
+                );
+                t = t.replace("[discretisation]\n", &format!("[discretisation]\n{disc}"));
+                t += density;
+                t += &scenes::liquid(matte);
+                t += &format!("[[body]]\nname = \"cube\"\nliquid = \"matte\"\nshape = {{ kind = \"box\", min = [{m:e}, {m:e}, {m:e}], max = [{h:e}, {h:e}, {h:e}] }}\n", m = -h);
+                t
+            }
+            Problem::SessileDrop => {
+                // 20 ms ≈ 6 capillary times √(ρR³/σ); the drop starts as the hemisphere it
+                // would be without gravity
+                let mut t = scenes::header(
+                    l0,
+                    150f64.sqrt(),
+                    0.02,
+                    2.0e-4,
+                    None,
+                    true,
+                    "study: sessile drop",
+                );
+                t = t.replace("[discretisation]\n", &format!("[discretisation]\n{disc}"));
+                t += density;
+                t += &scenes::liquid(matte);
+                t += "[[solid]]\nname = \"plate\"\ncontact_angles = { matte = 90.0 }\n";
+                t += &format!("[[body]]\nname = \"drop\"\nliquid = \"matte\"\nshape = {{ kind = \"hemisphere\", center = [0.0, 0.0, 0.0], radius = {DROP_RADIUS_M:e}, pole = [0.0, 0.0, 1.0] }}\n");
+                t += &format!("[[wall]]\nname = \"plate\"\nsolid = \"plate\"\nshape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {:e} }}\n", 2.0 * DROP_RADIUS_M);
+                t
+            }
+        };
+        scenes::parse(&text)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_point_builds_a_valid_scene_and_references_are_finite() {
+        for p in Grid::Full.points() {
+            let s = p.scene();
+            assert_eq!(s.discretisation.kernel, p.variant.kernel);
+        }
+        assert!(Problem::CubeDrop.reference() > 1e-3 && Problem::CubeDrop.reference() < 1.3e-3);
+        assert!(
+            Problem::SessileDrop.reference() > 0.8e-3 && Problem::SessileDrop.reference() < 1.0e-3
+        );
+        assert_eq!(Grid::Standard.variants().len(), 8);
+        assert_eq!(Grid::Full.variants().len(), 48);
+    }
+}

@@ -1,0 +1,127 @@
+//! Running and measuring the study's points.
+
+use super::grid::{Point, Problem};
+use crate::measure::oscillation;
+use crate::output::run_info::{RunInfo, Status};
+use crate::output::timeseries::Table;
+use anyhow::Context;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+/// What one point measured and cost.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PointResult {
+    /// The point.
+    pub point: Point,
+    /// `l0` [m].
+    pub l0_m: f64,
+    /// Fluid particles.
+    pub particles: usize,
+    /// Measured period [s] or height [m].
+    pub value: f64,
+    /// Analytic value (Lamb period [s] or Young–Laplace height [m]).
+    pub reference: f64,
+    /// `(value − reference)/reference` [-].
+    pub relative_error: f64,
+    /// Wall time of the time loop [s].
+    pub wall_time_s: f64,
+    /// Particle-steps per second [1/s].
+    pub particle_steps_per_second: f64,
+    /// Mean neighbours per particle within the largest cut-off plus skin.
+    pub mean_neighbours: f64,
+    /// Peak resident memory of the run's process [bytes].
+    pub peak_memory_bytes: Option<u64>,
+    /// `completed`, `failed: …` or `not measurable: …`.
+    pub status: String,
+}
+
+/// Runs `point` in its own `verify run` process (unless a finished run of the same scene is in
+/// its folder and `force` is off), then measures it.
+pub fn run_point(
+    point: &Point,
+    out: &Path,
+    exe: &Path,
+    threads: Option<usize>,
+    force: bool,
+) -> anyhow::Result<PointResult> {
+    let dir = out.join(point.id());
+    let scene = point.scene();
+    let reusable = std::fs::read_to_string(dir.join("run_info.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str::<RunInfo>(&t).ok())
+        .is_some_and(|i| i.status != Status::Running && i.scene == scene);
+    if force || !reusable {
+        std::fs::create_dir_all(&dir)?;
+        let scene_file = dir.with_extension("toml");
+        std::fs::write(&scene_file, toml::to_string(&scene)?)?;
+        let mut cmd = Command::new(exe);
+        cmd.arg("run")
+            .arg(&scene_file)
+            .arg("--out")
+            .arg(&dir)
+            .arg("--force");
+        if let Some(n) = threads {
+            cmd.arg("--threads").arg(n.to_string());
+        }
+        // a point that blows up is a result (status failed), not an error of the study
+        let _ = cmd
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .with_context(|| format!("running {}", exe.display()))?;
+    }
+    measure(point, &dir)
+}
+
+/// Measures a finished point from its folder.
+pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
+    let info: RunInfo = serde_json::from_str(&std::fs::read_to_string(dir.join("run_info.json"))?)?;
+    let ts = Table::read(&dir.join("timeseries.csv"))?;
+    let reference = point.problem.reference();
+    let l0 = point.l0();
+    let t = ts.column("time_s").unwrap_or_default();
+    let (value, why) = match point.problem {
+        Problem::CubeDrop => {
+            let q4 = ts.column("matte_q4").unwrap_or_default();
+            // skip the corners' collapse (0.2 ms), as the cube_drop case does
+            let from = t.iter().position(|&x| x >= 2e-4).unwrap_or(0);
+            match oscillation::fit_damped_cosine(&t[from..], &q4[from..]) {
+                Ok(f) => (f.period_s, None),
+                Err(e) => (f64::NAN, Some(e)),
+            }
+        }
+        Problem::SessileDrop => {
+            // top of the drop: highest particle centre + l0/2, the wall surface at z = 0;
+            // mean over the last quarter of the run
+            let top = ts.column("matte_max_z_m").unwrap_or_default();
+            let tail = &top[top.len() * 3 / 4..];
+            if tail.is_empty() {
+                (f64::NAN, Some("no output".to_string()))
+            } else {
+                (
+                    tail.iter().sum::<f64>() / tail.len() as f64 + 0.5 * l0,
+                    None,
+                )
+            }
+        }
+    };
+    let status = match (&info.status, why) {
+        (Status::Completed, None) => "completed".to_string(),
+        (Status::Completed, Some(e)) => format!("not measurable: {e}"),
+        (s, _) => format!("{s:?}: {}", info.error.clone().unwrap_or_default()).to_lowercase(),
+    };
+    Ok(PointResult {
+        point: *point,
+        l0_m: l0,
+        particles: info.fluid_particles,
+        value,
+        reference,
+        relative_error: value / reference - 1.0,
+        wall_time_s: info.wall_time_s,
+        particle_steps_per_second: info.particle_steps_per_second,
+        mean_neighbours: info.mean_neighbours,
+        peak_memory_bytes: info.peak_memory_bytes,
+        status,
+    })
+}

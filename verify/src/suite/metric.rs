@@ -1,0 +1,144 @@
+//! A measured quantity with its reference, the paper's own value, and its tolerance.
+
+use serde::{Deserialize, Serialize};
+
+/// How far a metric may lie from its reference, and why.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Tolerance {
+    /// Largest accepted `|value − reference|`, in the metric's unit.
+    pub abs: f64,
+    /// Where the tolerance comes from.
+    pub source: String,
+}
+
+impl Tolerance {
+    /// A tolerance of `fraction` of the reference's magnitude.
+    pub fn relative(fraction: f64, reference: f64, source: impl Into<String>) -> Self {
+        Tolerance {
+            abs: fraction * reference.abs(),
+            source: source.into(),
+        }
+    }
+}
+
+/// JSON has no NaN: a value that could not be measured is written as `null` and read back as NaN.
+mod nan_as_null {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+        if v.is_finite() {
+            s.serialize_f64(*v)
+        } else {
+            s.serialize_none()
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+        Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+    }
+}
+
+/// One row of a report.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Metric {
+    /// Case name.
+    pub case: String,
+    /// Metric name, unique within the case (e.g. `period c2=150`).
+    pub name: String,
+    /// Unit of value, reference, paper value and tolerance.
+    pub unit: String,
+    /// This project's value (NaN if it could not be measured; `null` in JSON).
+    #[serde(with = "nan_as_null")]
+    pub value: f64,
+    /// The analytic reference, computed by the code.
+    pub reference: Option<f64>,
+    /// The value the paper's own simulation reached.
+    pub paper: Option<f64>,
+    /// The acceptance tolerance against the reference.
+    pub tolerance: Option<Tolerance>,
+    /// Fluid particles of the run measured.
+    pub particles: usize,
+    /// Wall time of the run [s].
+    pub wall_time_s: f64,
+    /// What the number means, how it was measured, or why it missed.
+    pub note: String,
+}
+
+impl Metric {
+    /// A metric without reference (reported, not judged).
+    pub fn new(case: &str, name: impl Into<String>, unit: &str, value: f64) -> Self {
+        Metric {
+            case: case.to_string(),
+            name: name.into(),
+            unit: unit.to_string(),
+            value,
+            reference: None,
+            paper: None,
+            tolerance: None,
+            particles: 0,
+            wall_time_s: 0.0,
+            note: String::new(),
+        }
+    }
+
+    /// With an analytic reference and its tolerance.
+    pub fn against(mut self, reference: f64, tolerance: Tolerance) -> Self {
+        self.reference = Some(reference);
+        self.tolerance = Some(tolerance);
+        self
+    }
+
+    /// With the paper's own value.
+    pub fn paper(mut self, value: Option<f64>) -> Self {
+        self.paper = value;
+        self
+    }
+
+    /// With the run's size and cost.
+    pub fn run(mut self, run: &super::RunData) -> Self {
+        self.particles = run.info.fluid_particles;
+        self.wall_time_s = run.info.wall_time_s;
+        self
+    }
+
+    /// With a note.
+    pub fn note(mut self, note: impl Into<String>) -> Self {
+        self.note = note.into();
+        self
+    }
+
+    /// `value − reference`, if there is a reference.
+    pub fn error(&self) -> Option<f64> {
+        self.reference.map(|r| self.value - r)
+    }
+
+    /// Pass/fail against the tolerance, if there is one (a NaN value fails).
+    pub fn pass(&self) -> Option<bool> {
+        let err = self.error()?;
+        let tol = self.tolerance.as_ref()?;
+        Some(err.is_finite() && err.abs() <= tol.abs)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unmeasured_values_survive_json() {
+        let m = Metric::new("c", "m", "deg", f64::NAN).against(
+            1.0,
+            Tolerance {
+                abs: 0.1,
+                source: "t".into(),
+            },
+        );
+        let back: Metric = serde_json::from_str(&serde_json::to_string(&m).unwrap()).unwrap();
+        assert!(back.value.is_nan());
+        assert_eq!(
+            back.pass(),
+            Some(false),
+            "an unmeasured value fails its tolerance"
+        );
+    }
+}

@@ -1,0 +1,241 @@
+//! Every case at smoke fidelity: the metrics that smoke resolution can judge must pass their
+//! stated tolerances, the summary must match its snapshot (rounded to the digits that are stable
+//! across machines), reports must redraw without simulating, and finished runs are reused.
+
+use std::path::PathBuf;
+use verify::suite::runner::{self, SuiteOptions};
+use verify::suite::{all_cases, Case, Fidelity, Metric};
+
+fn out_dir(case: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("verify-smoke-{}-{case}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn case(name: &str) -> Box<dyn Case> {
+    all_cases()
+        .into_iter()
+        .find(|c| c.name() == name)
+        .expect("case exists")
+}
+
+fn run(name: &str) -> (Vec<Metric>, PathBuf) {
+    let out = out_dir(name);
+    let opts = SuiteOptions {
+        fidelity: Fidelity::Smoke,
+        out: out.clone(),
+        force: false,
+        threads: Some(2),
+        progress: false,
+    };
+    let metrics = runner::run_case(case(name).as_ref(), &opts).expect("case runs");
+    (metrics, out)
+}
+
+/// Two significant digits: runs are bitwise reproducible on one build, but the system libm's
+/// cos/pow may differ in the last bit between machines, and a last-bit difference grows over
+/// thousands of steps to a few parts in 1e3 of these observables.
+fn round2(v: f64) -> String {
+    if !v.is_finite() {
+        return "NaN".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    if !(-3..5).contains(&mag) {
+        return format!("{v:.1e}");
+    }
+    let scale = 10f64.powi(1 - mag);
+    format!("{}", (v * scale).round() / scale)
+}
+
+fn summary(metrics: &[Metric]) -> String {
+    metrics
+        .iter()
+        .map(|m| {
+            let pass = match m.pass() {
+                Some(true) => "pass",
+                Some(false) => "FAIL",
+                None => "-",
+            };
+            // round-off-level quantities (momentum, centroid drift) differ between machines in
+            // every digit: only whether they pass is stable
+            let value = if m.name.contains("drift") {
+                "round-off".to_string()
+            } else {
+                round2(m.value)
+            };
+            format!("{} = {value} {} [{pass}]", m.name, m.unit)
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn must_pass(metrics: &[Metric], names: &[&str]) {
+    for n in names {
+        let m = metrics
+            .iter()
+            .find(|m| &m.name == n)
+            .unwrap_or_else(|| panic!("metric {n} missing"));
+        assert_eq!(
+            m.pass(),
+            Some(true),
+            "{n}: value {} vs reference {:?} ± {:?} — {}",
+            m.value,
+            m.reference,
+            m.tolerance,
+            m.note
+        );
+    }
+}
+
+#[test]
+fn cube_drop_smoke() {
+    let (m, out) = run("cube_drop");
+    // The width of a 10³ cube is set by single outermost particles and too noisy to fit; the
+    // l = 4 moment Q4 is judged: Lamb's period within the case's 10 % (measured +7 %).
+    must_pass(&m, &["period (Q4) c²=150"]);
+    insta::assert_snapshot!("cube_drop", summary(&m));
+
+    // the report redraws from saved data: delete a plot, reanalyse, it is back; runs reused
+    let plot = out.join("cube_drop/period_vs_c2.png");
+    std::fs::remove_file(&plot).unwrap();
+    let stamp = std::fs::metadata(out.join("cube_drop/c2_150/run_info.json"))
+        .unwrap()
+        .modified()
+        .unwrap();
+    let again = runner::analyse_case(case("cube_drop").as_ref(), Fidelity::Smoke, &out).unwrap();
+    assert!(plot.exists());
+    assert_eq!(summary(&again), summary(&m));
+    let opts = SuiteOptions {
+        fidelity: Fidelity::Smoke,
+        out: out.clone(),
+        force: false,
+        threads: Some(2),
+        progress: false,
+    };
+    runner::run_case(case("cube_drop").as_ref(), &opts).unwrap();
+    let stamp2 = std::fs::metadata(out.join("cube_drop/c2_150/run_info.json"))
+        .unwrap()
+        .modified()
+        .unwrap();
+    assert_eq!(
+        stamp, stamp2,
+        "a finished run is reused, not simulated again"
+    );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn equal_doublet_smoke() {
+    let (m, out) = run("equal_doublet");
+    // G1G2/R0 at σ12 = 0.4 against the analytic doublet, within half a spacing plus the
+    // residual oscillation; σ12 = 1.0 ≥ 2σ1 parts or touches (Eq. 25)
+    must_pass(&m, &["G1G2/R0 σ12=0.4", "separation σ12=1.0"]);
+    insta::assert_snapshot!("equal_doublet", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn matte_slag_doublet_smoke() {
+    let (m, out) = run("matte_slag_doublet");
+    // the lens regime and G1G2/R0; the triple-line angles need more than R0/l0 = 5 (at smoke
+    // resolution no particle is both on the free surface and at the interface)
+    must_pass(&m, &["regime σ12=0.4", "G1G2/R0 σ12=0.4"]);
+    insta::assert_snapshot!("matte_slag_doublet", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn plate_eq23_smoke() {
+    let (m, out) = run("plate_eq23");
+    // θ23 = θ31 = 90°: both liquids on the plate, θ12 = 90° (Eq. 23)
+    must_pass(
+        &m,
+        &["contact identical_theta23_90", "θ12 identical_theta23_90"],
+    );
+    for map in ["theta12_map_fig3a.png", "theta12_map_fig3b.png"] {
+        assert!(out.join("plate_eq23").join(map).exists());
+    }
+    insta::assert_snapshot!("plate_eq23", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn water_oil_teflon_smoke() {
+    let (m, out) = run("water_oil_teflon");
+    // 20 ms at l0 = 0.35 mm is far from equilibrium (the oil has not spread yet): nothing has an
+    // analytic value to meet; the run must complete and be measured
+    let info =
+        std::fs::read_to_string(out.join("water_oil_teflon/water_oil/run_info.json")).unwrap();
+    assert!(info.contains("\"status\": \"completed\""));
+    assert!(m
+        .iter()
+        .any(|x| x.name == "water share of the wetted plate" && x.value.is_finite()));
+    insta::assert_snapshot!("water_oil_teflon", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn hard_cases_smoke() {
+    let (m, out) = run("hard_cases");
+    // every judged invariant of every hard scene: completion, particles kept, mass exact, no
+    // particle inside a wall, momentum to round-off and bounded energy where no external force
+    // acts, compression after the transient, one body and no clumping for the drop at rest
+    let failed: Vec<String> = m
+        .iter()
+        .filter(|x| x.pass() == Some(false))
+        .map(|x| format!("{}: {} ({})", x.name, x.value, x.note))
+        .collect();
+    assert!(failed.is_empty(), "failed invariants: {failed:#?}");
+    assert!(m.iter().filter(|x| x.pass().is_some()).count() >= 40);
+    insta::assert_snapshot!("hard_cases", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn compare_flags_a_worse_metric_and_the_cli_exits_4() {
+    // a baseline where the cube's Q4 period error was 0: the smoke run's +7 % (more than a
+    // quarter of the 10 % tolerance above it) is a regression
+    let dir = out_dir("compare");
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = dir.join("baseline.csv");
+    std::fs::write(
+        &base,
+        "case,name,unit,value,reference,paper,error,tolerance,tolerance_source,pass,particles,wall_time_s,note\n\
+         cube_drop,period (Q4) c²=150,ms,1.2135,1.2135,,0,0.12135,test,pass,1000,1,\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
+        .args(["case", "cube_drop", "--fidelity", "smoke", "--out"])
+        .arg(&out)
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
+        .args(["all", "--fidelity", "smoke", "--out"])
+        .arg(&out)
+        .arg("--compare")
+        .arg(&base)
+        .output()
+        .unwrap();
+    assert_eq!(
+        st.status.code(),
+        Some(4),
+        "{}",
+        String::from_utf8_lossy(&st.stderr)
+    );
+    assert!(String::from_utf8_lossy(&st.stderr).contains("period (Q4) c²=150"));
+    // against its own summary nothing is worse
+    let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
+        .args(["all", "--fidelity", "smoke", "--out"])
+        .arg(&out)
+        .arg("--compare")
+        .arg(out.join("summary.csv"))
+        .status()
+        .unwrap();
+    assert_eq!(st.code(), Some(0));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -45,7 +45,7 @@ fn neighbours(c: &mut Criterion) {
                 let sim = sim.get_mut().expect("initialised");
                 b.iter(|| {
                     rebuild_neighbours(sim);
-                    black_box(sim.search.lists.list.len())
+                    black_box(sim.search.lists.entries())
                 })
             });
         }

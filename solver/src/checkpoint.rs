@@ -128,7 +128,11 @@ impl Simulation {
                 source,
             })?;
         search.builds = c.builds;
-        let n_fluid = p.n_fluid;
+        let n_fluid = if c.scene.density.scheme == crate::scene::DensityScheme::Continuity {
+            p.n_fluid
+        } else {
+            0
+        };
         Ok(Simulation::from_parts(
             model,
             p,

@@ -82,6 +82,7 @@ impl Simulation {
         let skin = scene.discretisation.neighbour_skin_over_l0 * model.l0_m;
         let search = NeighbourSearch::new(model.support_m, far, skin);
         let n_fluid = particles.n_fluid;
+        let continuity = scene.density.scheme == DensityScheme::Continuity;
         let mut sim = Simulation {
             model,
             particles,
@@ -95,7 +96,11 @@ impl Simulation {
             max_speed2: 0.0,
             max_acc2: 0.0,
             first_dt_s: 0.0,
-            drho_next: vec![0.0; n_fluid],
+            drho_next: if continuity {
+                vec![0.0; n_fluid]
+            } else {
+                Vec::new()
+            },
         };
         sim.sort_walls()?;
         sim.rebuild_neighbours()?;

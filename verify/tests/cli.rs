@@ -120,11 +120,11 @@ fn an_invalid_scene_exits_with_code_2_and_names_the_field() {
 
 #[test]
 fn a_failing_run_exits_1_keeps_its_outputs_and_says_why() {
-    // gravity of 1e4 m/s² accelerates the drop past Mach 0.5 (6 m/s at c = 12 m/s) after about
-    // 0.6 ms: several outputs are written before the health check stops the run
+    // gravity of 1e4 m/s² accelerates the drop past Mach 1 (12 m/s at c = 12 m/s) after about
+    // 1.2 ms: several outputs are written before the health check stops the run
     let dir = tmp("fail");
     let text = SMALL
-        .replace("end = 2.0e-5", "end = 2.0e-3")
+        .replace("end = 2.0e-5", "end = 3.0e-3")
         .replace("output_interval = 1.0e-5", "output_interval = 1.0e-4")
         .replace("[effects]", "[effects]\ngravity = [0.0, 0.0, -1.0e4]");
     let scene = scene_file(&dir, &text);

@@ -20,36 +20,52 @@ pub use cells::{cell_key, CellKeyError};
 use crate::state::Vec3;
 use rayon::prelude::*;
 
-/// Neighbour lists in compressed-row form.
+/// Neighbour lists, stored in the segments the parallel build produced (no flattening copy:
+/// it would double the lists' memory at every rebuild).
 #[derive(Clone, Debug, Default)]
 pub struct NeighbourLists {
-    /// `start[i]..start[i+1]` is particle `i`'s slice of `list` (len n + 1).
-    pub start: Vec<u32>,
-    /// End of the near part of particle `i`'s slice.
-    pub near_end: Vec<u32>,
-    /// Neighbour indices.
-    pub list: Vec<u32>,
+    /// The segments of neighbour indices.
+    segments: Vec<Vec<u32>>,
+    /// Per particle: `(segment, start, near end, end)` within its segment.
+    loc: Vec<[u32; 4]>,
 }
 
 impl NeighbourLists {
+    #[inline(always)]
+    fn slice(&self, i: usize, from: usize, to: usize) -> &[u32] {
+        let l = self.loc[i];
+        &self.segments[l[0] as usize][l[from] as usize..l[to] as usize]
+    }
     /// Near neighbours of `i` (within support + skin).
     #[inline(always)]
     pub fn near(&self, i: usize) -> &[u32] {
-        &self.list[self.start[i] as usize..self.near_end[i] as usize]
+        self.slice(i, 1, 2)
     }
     /// All neighbours of `i` (within the far radius + skin), near ones first.
     #[inline(always)]
     pub fn all(&self, i: usize) -> &[u32] {
-        &self.list[self.start[i] as usize..self.start[i + 1] as usize]
+        self.slice(i, 1, 3)
     }
     /// Far-only neighbours of `i`.
     #[inline(always)]
     pub fn far(&self, i: usize) -> &[u32] {
-        &self.list[self.near_end[i] as usize..self.start[i + 1] as usize]
+        self.slice(i, 2, 3)
+    }
+    /// Number of particles with lists.
+    pub fn len(&self) -> usize {
+        self.loc.len()
+    }
+    /// Whether there are no lists.
+    pub fn is_empty(&self) -> bool {
+        self.loc.is_empty()
+    }
+    /// Total entries over all lists.
+    pub fn entries(&self) -> usize {
+        self.segments.iter().map(|s| s.len()).sum()
     }
     /// Bytes held.
     pub fn memory_bytes(&self) -> usize {
-        4 * (self.start.capacity() + self.near_end.capacity() + self.list.capacity())
+        4 * self.segments.iter().map(|s| s.capacity()).sum::<usize>() + 16 * self.loc.capacity()
     }
 }
 
@@ -68,6 +84,8 @@ pub struct NeighbourSearch {
     wall_keys: Vec<u64>,
     /// Current lists (fluid particles, then walls: walls list only fluid neighbours).
     pub lists: NeighbourLists,
+    /// Per segment: (near count, total count) of each particle (kept for reuse).
+    counts: Vec<Vec<(u32, u32)>>,
     /// Number of builds so far.
     pub builds: u64,
 }
@@ -76,14 +94,6 @@ pub struct NeighbourSearch {
 pub const REACH: i64 = 2;
 /// Rows (along x) in a neighbourhood.
 const ROWS: usize = ((2 * REACH + 1) * (2 * REACH + 1)) as usize;
-
-/// Output of one chunk of cells.
-#[derive(Default)]
-struct Chunk {
-    list: Vec<u32>,
-    /// (near count, total count) per particle.
-    counts: Vec<(u32, u32)>,
-}
 
 impl NeighbourSearch {
     /// A search for the given radii [m] and skin [m]; `wall_pos` must already be sorted with
@@ -98,6 +108,7 @@ impl NeighbourSearch {
             fluid_keys: Vec::new(),
             wall_keys: Vec::new(),
             lists: NeighbourLists::default(),
+            counts: Vec::new(),
             builds: 0,
         }
     }
@@ -122,7 +133,8 @@ impl NeighbourSearch {
     }
 
     /// Builds the lists for fluid positions `pos[..n_fluid]` (sorted by key) and wall positions
-    /// `pos[n_fluid..]` (sorted by key).
+    /// `pos[n_fluid..]` (sorted by key). The segment buffers of the previous build are reused:
+    /// no allocation churn, one set of lists in memory.
     pub fn build(&mut self, pos: &[Vec3], n_fluid: usize) -> Result<(), CellKeyError> {
         self.fluid_keys = self.keys(&pos[..n_fluid])?;
         if self.wall_keys.len() != pos.len() - n_fluid {
@@ -135,13 +147,25 @@ impl NeighbourSearch {
         let (near2, far2) = (near_cut * near_cut, far_cut * far_cut);
         let fk = &self.fluid_keys;
         let wk = &self.wall_keys;
+        let fluid_runs = runs_of(fk);
+        let wall_runs = runs_of(wk);
+        const RUNS_PER_SEGMENT: usize = 16;
+        let n_fluid_seg = fluid_runs.len().div_ceil(RUNS_PER_SEGMENT);
+        let n_seg = n_fluid_seg + wall_runs.len().div_ceil(RUNS_PER_SEGMENT);
+        let lists = &mut self.lists;
+        lists.segments.resize_with(n_seg, Vec::new);
+        self.counts.resize_with(n_seg, Vec::new);
+        let (fluid_seg, wall_seg) = lists.segments.split_at_mut(n_fluid_seg);
+        let (fluid_cnt, wall_cnt) = self.counts.split_at_mut(n_fluid_seg);
 
         // fluid particles: fluid and wall neighbours, near then far
-        let runs = runs_of(fk);
-        let fluid_chunks: Vec<Chunk> = runs
-            .par_chunks(16)
-            .map(|runs| {
-                let mut out = Chunk::default();
+        fluid_seg
+            .par_iter_mut()
+            .zip(fluid_cnt.par_iter_mut())
+            .zip(fluid_runs.par_chunks(RUNS_PER_SEGMENT))
+            .for_each(|((list, counts), runs)| {
+                list.clear();
+                counts.clear();
                 let (mut near_buf, mut far_buf): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
                 let (mut fc, mut wc) = (RowCursor::new(fk), RowCursor::new(wk));
                 for &(s, e) in runs {
@@ -155,8 +179,8 @@ impl NeighbourSearch {
                     for i in s..e {
                         let pi = pos[i];
                         let (mut nn, mut nf) = (0usize, 0usize);
-                        // branch-free compaction: every candidate is written, the list grows only
-                        // when it passes (a quarter do, at random: a branch would mispredict)
+                        // branch-free compaction: every candidate is written, the list grows
+                        // only when it passes (a quarter do, at random: a branch would mispredict)
                         let mut scan = |j: usize| {
                             let d2 = (pi - pos[j]).norm_squared();
                             let is_near = (d2 < near2) & (j != i);
@@ -176,96 +200,63 @@ impl NeighbourSearch {
                                 scan(n_fluid + jw);
                             }
                         }
-                        out.list.extend_from_slice(&near_buf[..nn]);
-                        out.list.extend_from_slice(&far_buf[..nf]);
-                        out.counts.push((nn as u32, (nn + nf) as u32));
+                        list.extend_from_slice(&near_buf[..nn]);
+                        list.extend_from_slice(&far_buf[..nf]);
+                        counts.push((nn as u32, (nn + nf) as u32));
                     }
                 }
-                out
-            })
-            .collect();
+            });
 
         // wall particles: fluid neighbours within the kernel support (+ skin)
-        let wall_runs = runs_of(wk);
-        let wall_chunks: Vec<Chunk> = wall_runs
-            .par_chunks(16)
-            .map(|runs| {
-                let mut out = Chunk::default();
+        wall_seg
+            .par_iter_mut()
+            .zip(wall_cnt.par_iter_mut())
+            .zip(wall_runs.par_chunks(RUNS_PER_SEGMENT))
+            .for_each(|((list, counts), runs)| {
+                list.clear();
+                counts.clear();
                 let mut fc = RowCursor::new(fk);
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(wk[s]);
                     let any_fluid = f_ranges.iter().any(|r| !r.is_empty());
                     for iw in s..e {
-                        let before = out.list.len();
+                        let before = list.len();
                         if any_fluid {
                             let pi = pos[n_fluid + iw];
                             for r in &f_ranges {
                                 for j in r.clone() {
                                     if (pi - pos[j]).norm_squared() < near2 {
-                                        out.list.push(j as u32);
+                                        list.push(j as u32);
                                     }
                                 }
                             }
                         }
-                        let n = (out.list.len() - before) as u32;
-                        out.counts.push((n, n));
+                        let n = (list.len() - before) as u32;
+                        counts.push((n, n));
                     }
                 }
-                out
-            })
-            .collect();
-
-        // flatten: offsets by a prefix sum over the chunks, then every chunk copied in parallel
-        // into its own disjoint part of the arrays
-        let chunks: Vec<&Chunk> = fluid_chunks.iter().chain(&wall_chunks).collect();
-        let mut list_at = Vec::with_capacity(chunks.len() + 1);
-        let mut particle_at = Vec::with_capacity(chunks.len() + 1);
-        let (mut nl, mut np) = (0usize, 0usize);
-        for c in &chunks {
-            list_at.push(nl);
-            particle_at.push(np);
-            nl += c.list.len();
-            np += c.counts.len();
-        }
-        let lists = &mut self.lists;
-        lists.list.resize(nl, 0);
-        lists.start.resize(np + 1, 0);
-        lists.near_end.resize(np, 0);
-        lists.start[np] = nl as u32;
-        let mut list_parts = Vec::with_capacity(chunks.len());
-        let mut start_parts = Vec::with_capacity(chunks.len());
-        let mut near_parts = Vec::with_capacity(chunks.len());
-        let (mut rest_l, mut rest_s, mut rest_n) = (
-            &mut lists.list[..],
-            &mut lists.start[..np],
-            &mut lists.near_end[..],
-        );
-        for c in &chunks {
-            let (a, b) = std::mem::take(&mut rest_l).split_at_mut(c.list.len());
-            list_parts.push(a);
-            rest_l = b;
-            let (a, b) = std::mem::take(&mut rest_s).split_at_mut(c.counts.len());
-            start_parts.push(a);
-            rest_s = b;
-            let (a, b) = std::mem::take(&mut rest_n).split_at_mut(c.counts.len());
-            near_parts.push(a);
-            rest_n = b;
-        }
-        chunks
-            .par_iter()
-            .zip(list_parts.into_par_iter())
-            .zip(start_parts.into_par_iter().zip(near_parts.into_par_iter()))
-            .zip(list_at.par_iter())
-            .for_each(|(((c, l), (st, ne)), &base)| {
-                l.copy_from_slice(&c.list);
-                let mut offset = base as u32;
-                for (k, &(n_near, n_all)) in c.counts.iter().enumerate() {
-                    st[k] = offset;
-                    ne[k] = offset + n_near;
-                    offset += n_all;
-                }
             });
-        debug_assert_eq!(lists.near_end.len(), pos.len());
+
+        // segments are reused from build to build and keep their largest size; cap the slack at
+        // a quarter so that it cannot accumulate (measured: 2.9× the entries otherwise)
+        for list in lists.segments.iter_mut() {
+            if list.capacity() > list.len() + list.len() / 4 + 64 {
+                list.shrink_to(list.len() + list.len() / 8);
+            }
+        }
+        // each particle records where its list is
+        lists.loc.clear();
+        lists.loc.reserve(pos.len());
+        for (k, c) in self.counts.iter().enumerate() {
+            let mut offset = 0u32;
+            for &(n_near, n_all) in c {
+                lists
+                    .loc
+                    .push([k as u32, offset, offset + n_near, offset + n_all]);
+                offset += n_all;
+            }
+        }
+        debug_assert_eq!(lists.loc.len(), pos.len());
         self.builds += 1;
         Ok(())
     }

@@ -94,7 +94,6 @@ pub fn fluid_forces<
     let eta2 = 0.01 * h * h; // (0.1 h)², Eq. (13), Natsui 2021
     let (alpha1, alpha2) = inp.alpha;
     let c_s = inp.c_m_s;
-    let n_fluid = inp.n_fluid;
     let nph = inp.n_phases;
     let (pos, vel, rho, pre, vol, phase) =
         (inp.pos, inp.vel, inp.rho, inp.pressure, inp.vol, inp.phase);
@@ -113,73 +112,64 @@ pub fn fluid_forces<
         let mut f = Vec3::zeros();
         let mut dr = 0.0;
         for chunk in inp.lists.near(i).chunks(CHUNK) {
-            // gather, then the per-pair geometry branch-free over the chunk (vectorisable)
-            let (mut dx, mut dy, mut dz, mut c) =
-                ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
-            for (n, &j) in chunk.iter().enumerate() {
-                let d = pi - pos[j as usize];
-                dx[n] = d.x;
-                dy[n] = d.y;
-                dz[n] = d.z;
-                if IT {
-                    c[n] = coeff_row[phase[j as usize] as usize];
-                }
-            }
-            let (mut inv_r, mut dw, mut pot) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
-            let mut inside = [false; CHUNK];
+            let g = Gather::<CHUNK>::of::<VISC, AV, IT, WALL, CONT>(
+                chunk, pi, vi, inp, coeff_row, mu_row,
+            );
+            // every pair term of the chunk, branch-free (the compiler vectorises this loop;
+            // padded lanes have r = 0 and contribute exact zeros)
+            let (mut ca, mut cb, mut cd) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for n in 0..CHUNK {
-                let r2 = dx[n] * dx[n] + dy[n] * dy[n] + dz[n] * dz[n];
+                let r2 = g.dx[n] * g.dx[n] + g.dy[n] * g.dy[n] + g.dz[n] * g.dz[n];
                 let r = r2.sqrt();
                 let ir = 1.0 / r;
                 // coincident particles have no direction: no force (the health check reports them)
                 let apart = r2 > 0.0;
-                inv_r[n] = if apart { ir } else { 0.0 };
-                inside[n] = apart && r2 < support2;
-                let d = k.dw_dr_inside(r.min(support));
-                dw[n] = if inside[n] { d } else { 0.0 };
+                let inside = apart && r2 < support2;
+                let dw_r = k.dw_dr_inside(r.min(support)) * ir; // dW/dr / r [1/m⁵]
+                                                                // the pair force is a · r_ij + b · v_ij: pressure, artificial viscosity and
+                                                                // tension act along r_ij, laminar viscosity along v_ij; both coefficients are
+                                                                // symmetric in i and j, so F_ji = −F_ij to the last bit
+                let mut a = 0.0;
                 if IT {
                     // Eq. (15), Natsui 2021 (physics.md §4): C_ij (r − l0)(r − r_e) e_ij
-                    let v = c[n] * (r - l0) * (r - r_e) * ir;
-                    pot[n] = if apart && r2 < re2 { v } else { 0.0 };
+                    let v = g.c[n] * (r - l0) * (r - r_e) * ir;
+                    a = if apart && r2 < re2 { v } else { 0.0 };
+                }
+                if PRES {
+                    // Eq. (11), Natsui 2021: −(p_i V_i² + p_j V_j²) ∇_i W_ij
+                    let v = (pv_i + g.pv[n]) * dw_r;
+                    a -= if inside { v } else { 0.0 };
+                }
+                let vr = g.vx[n] * g.dx[n] + g.vy[n] * g.dy[n] + g.vz[n] * g.dz[n];
+                if AV {
+                    let phi = h * vr / (r2 + eta2); // Eq. (13), Natsui 2021
+                                                    // Eq. (12), Natsui 2021 with m_i m_j Π_ij (physics.md §3)
+                    let pi_ij =
+                        (-alpha1 * c_s * phi + alpha2 * phi * phi) / (0.5 * (rho_i + g.rho[n]));
+                    let v = m_i * g.m[n] * pi_ij * dw_r;
+                    a -= if inside && g.av[n] && vr < 0.0 {
+                        v
+                    } else {
+                        0.0
+                    };
+                }
+                ca[n] = a;
+                if VISC {
+                    // Eq. (11), Natsui 2021: 2μiμj/(μi+μj) (V_i² + V_j²) (dW/dr / r) v_ij
+                    let v = g.mu[n] * (v2_i + g.v2[n]) * dw_r;
+                    cb[n] = if inside { v } else { 0.0 };
+                }
+                if CONT {
+                    let v = g.vol[n] * vr * dw_r; // V_j v_ij·∇_i W_ij
+                    cd[n] = if inside { v } else { 0.0 };
                 }
             }
             for n in 0..chunk.len() {
-                let rij = Vec3::new(dx[n], dy[n], dz[n]);
-                if inside[n] {
-                    let j = chunk[n] as usize;
-                    let e = rij * inv_r[n];
-                    let dwn = dw[n];
-                    let is_wall = WALL && j >= n_fluid;
-                    let v_j = vol[j];
-                    if PRES {
-                        // Eq. (11), Natsui 2021: −(p_i V_i² + p_j V_j²) ∇_i W_ij
-                        f -= e * ((pv_i + pre[j] * v_j * v_j) * dwn);
-                    }
-                    if AV || VISC || CONT {
-                        let vij = vi - vel[j];
-                        if AV && !is_wall {
-                            let vr = vij.dot(&rij);
-                            if vr < 0.0 {
-                                let phi = h * vr / (rij.norm_squared() + eta2); // Eq. (13), Natsui 2021
-                                let m_j = inp.mass[phase[j] as usize];
-                                // Eq. (12), Natsui 2021 with m_i m_j Π_ij (physics.md §3)
-                                let pi_ij = (-alpha1 * c_s * phi + alpha2 * phi * phi)
-                                    / (0.5 * (rho_i + rho[j]));
-                                f -= e * (m_i * m_j * pi_ij * dwn);
-                            }
-                        }
-                        if VISC && (!is_wall || inp.wall_no_slip[j - n_fluid]) {
-                            // Eq. (11), Natsui 2021: 2μiμj/(μi+μj) (V_i² + V_j²) (dW/dr / r) v_ij
-                            let mu_ij = mu_row[phase[j] as usize];
-                            f += vij * (mu_ij * (v2_i + v_j * v_j) * dwn * inv_r[n]);
-                        }
-                        if CONT {
-                            dr += v_j * vij.dot(&e) * dwn; // Σ_j V_j v_ij·∇_i W_ij
-                        }
-                    }
-                }
-                if IT {
-                    f += rij * pot[n];
+                f.x += g.dx[n] * ca[n] + g.vx[n] * cb[n];
+                f.y += g.dy[n] * ca[n] + g.vy[n] * cb[n];
+                f.z += g.dz[n] * ca[n] + g.vz[n] * cb[n];
+                if CONT {
+                    dr += cd[n];
                 }
             }
         }
@@ -205,8 +195,99 @@ pub fn fluid_forces<
     }
 }
 
-/// Neighbours processed together by [`far_potential`].
+/// Neighbours processed together by the pair loops.
 const CHUNK: usize = 16;
+
+/// One chunk of a particle's neighbours, gathered into arrays: the pair arithmetic then runs
+/// over the arrays without indirection or branches.
+struct Gather<const N: usize> {
+    /// `x_i − x_j` [m].
+    dx: [f64; N],
+    dy: [f64; N],
+    dz: [f64; N],
+    /// `v_i − v_j` [m/s] (zero for a free-slip wall: it takes no part in the viscous terms).
+    vx: [f64; N],
+    vy: [f64; N],
+    vz: [f64; N],
+    /// `p_j V_j²` [N·m].
+    pv: [f64; N],
+    /// `V_j²` [m⁶].
+    v2: [f64; N],
+    /// `V_j` [m³].
+    vol: [f64; N],
+    /// `ρ_j` [kg/m³].
+    rho: [f64; N],
+    /// `m_j` [kg].
+    m: [f64; N],
+    /// Pair viscosity [Pa·s] (zero against a free-slip wall).
+    mu: [f64; N],
+    /// Potential coefficient `C_ij` [N/m²].
+    c: [f64; N],
+    /// Artificial viscosity applies (a fluid pair).
+    av: [bool; N],
+}
+
+impl<const N: usize> Gather<N> {
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn of<const VISC: bool, const AV: bool, const IT: bool, const WALL: bool, const CONT: bool>(
+        chunk: &[u32],
+        pi: Vec3,
+        vi: Vec3,
+        inp: &ForceInput<impl Kernel>,
+        coeff_row: &[f64],
+        mu_row: &[f64],
+    ) -> Self {
+        let mut g = Gather {
+            dx: [0.0; N],
+            dy: [0.0; N],
+            dz: [0.0; N],
+            vx: [0.0; N],
+            vy: [0.0; N],
+            vz: [0.0; N],
+            pv: [0.0; N],
+            v2: [0.0; N],
+            vol: [0.0; N],
+            rho: [1.0; N],
+            m: [0.0; N],
+            mu: [0.0; N],
+            c: [0.0; N],
+            av: [false; N],
+        };
+        for (n, &j) in chunk.iter().enumerate() {
+            let j = j as usize;
+            let d = pi - inp.pos[j];
+            g.dx[n] = d.x;
+            g.dy[n] = d.y;
+            g.dz[n] = d.z;
+            let is_wall = WALL && j >= inp.n_fluid;
+            let vj = inp.vol[j];
+            g.pv[n] = inp.pressure[j] * vj * vj;
+            g.v2[n] = vj * vj;
+            g.vol[n] = vj;
+            let ph = inp.phase[j] as usize;
+            if AV || VISC || CONT {
+                let v = vi - inp.vel[j];
+                g.vx[n] = v.x;
+                g.vy[n] = v.y;
+                g.vz[n] = v.z;
+            }
+            if AV {
+                g.rho[n] = inp.rho[j];
+                g.m[n] = inp.mass[ph];
+                g.av[n] = !is_wall;
+            }
+            if VISC {
+                let coupled = !is_wall || inp.wall_no_slip[j - inp.n_fluid];
+                g.mu[n] = if coupled { mu_row[ph] } else { 0.0 };
+            }
+            if IT {
+                g.c[n] = coeff_row[ph];
+            }
+        }
+        g
+    }
+}
 
 /// Adds the potential force of the far neighbours (beyond the kernel support, within `r_e`) to
 /// `f`: Eq. (15), Natsui 2021, `C_ij (r − l0)(r − r_e) e_ij`.

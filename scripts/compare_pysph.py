@@ -245,11 +245,13 @@ def cmd_summarise(a):
     lines.append(
         f"- Ours: `verify run {scene_file} --threads {machine['threads']}`, "
         "`run_info.json`: `particle_steps_per_second` (fluid particles × steps / wall time of "
-        "the time loop, set-up excluded) and `mean_neighbours` (length of the Verlet lists at "
-        f"the end, self excluded, radius max(2h, r_e) + skin = {list_l0:.2f} l0). On the initial "
-        f"{n_side}³ lattice that radius holds {us_lat_list:.1f} neighbours, "
-        f"while max(2h, r_e) = {max(re_l0, support_l0):.2f} l0 alone holds {us_lat_re:.1f}: the "
-        "skin's share is counted as neighbours."
+        "the time loop, set-up excluded) and `mean_neighbours` (neighbours closer than "
+        f"max(2h, r_e) = {max(re_l0, support_l0):.2f} l0 at the end, self excluded). A bulk "
+        f"particle of the initial {n_side}³ lattice has {us_lat_re:.1f} there, a disordered "
+        f"liquid of the same density (4/3)π({max(re_l0, support_l0):.2f})³ = "
+        f"{4.0 / 3.0 * math.pi * max(re_l0, support_l0) ** 3:.1f}; surface particles have fewer. The "
+        f"Verlet lists also hold the skin's shell (radius {list_l0:.2f} l0, {us_lat_list:.1f} on "
+        "the lattice), which the pair loop visits but which is not counted."
     )
     lines.append(f"- Our effects: {', '.join(us[0]['effects'])}.")
     lines.append(f"- Our revision: {us[0]['git_revision']}.")

@@ -145,6 +145,10 @@ enum StudyKind {
         /// Worker threads per run (default: all cores).
         #[arg(long, value_name = "N")]
         threads: Option<usize>,
+        /// Leave out the points with more fluid particles than N (a shorter run; the summary
+        /// lists what was left out).
+        #[arg(long, value_name = "N")]
+        max_particles: Option<usize>,
     },
 }
 
@@ -223,8 +227,9 @@ fn main() {
                     out,
                     force,
                     threads,
+                    max_particles,
                 },
-        } => exit_of(accuracy_cost(grid, &out, force, threads)),
+        } => exit_of(accuracy_cost(grid, &out, force, threads, max_particles)),
     };
     std::process::exit(code);
 }
@@ -300,11 +305,18 @@ fn accuracy_cost(
     out: &Path,
     force: bool,
     threads: Option<usize>,
+    max_particles: Option<usize>,
 ) -> anyhow::Result<i32> {
     use verify::study::{analysis, points};
     let exe = std::env::current_exe()?;
     std::fs::create_dir_all(out)?;
-    let all = grid.points();
+    let (all, left_out): (Vec<_>, Vec<_>) =
+        grid.points()
+            .into_iter()
+            .partition(|p| match max_particles {
+                Some(m) => p.estimated_particles() <= m,
+                None => true,
+            });
     let mut results = Vec::new();
     for (k, p) in all.iter().enumerate() {
         let r = points::run_point(p, out, &exe, threads, force)?;
@@ -321,6 +333,20 @@ fn accuracy_cost(
         results.push(r);
     }
     analysis::write(out, &results, &grid.variants())?;
+    if !left_out.is_empty() {
+        use std::io::Write;
+        let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();
+        let mut f = std::fs::OpenOptions::new()
+            .append(true)
+            .open(out.join("summary.md"))?;
+        writeln!(
+            f,
+            "\n**Left out of this run** (`--max-particles {}`): {} point(s) — {}.",
+            max_particles.unwrap_or(0),
+            left_out.len(),
+            ids.join(", ")
+        )?;
+    }
     eprintln!("study: {}", out.join("summary.md").display());
     Ok(0)
 }

@@ -134,13 +134,19 @@ impl Default for Health {
 pub struct Discretisation {
     /// Initial particle spacing `l0` [m] (simple cubic lattice).
     pub l0: f64,
+    /// Which paper's discretisation supplies the defaults of `h_over_l0` and `re_over_l0`
+    /// (values given explicitly win). Default `natsui2021`.
+    #[serde(default)]
+    pub setting: Setting,
     /// Smoothing kernel. Default: Wendland C2 (Eq. 5, Natsui 2021).
     #[serde(default)]
     pub kernel: KernelKind,
-    /// Smoothing length over spacing, `h/l0` [-]. Default 1.05 (Natsui 2021 §2.2).
+    /// Smoothing length over spacing, `h/l0` [-]. Default 1.05 (Natsui 2021 §2.2; 2.0 with
+    /// `setting = "natsui2016"`).
     #[serde(default = "default_h_over_l0")]
     pub h_over_l0: f64,
-    /// Cut-off of the interparticle potential over spacing, `r_e/l0` [-]. Default 4.2, the
+    /// Cut-off of the interparticle potential over spacing, `r_e/l0` [-]. Default 4.2 (4.0 with
+    /// `setting = "natsui2016"`), the
     /// 2021 paper's formula read literally (physics.md §4 leaves 2.1 vs 4.2 open). Chosen by
     /// measurement: at 2.1 the potential gives the particle lattice a shear modulus of
     /// 1.88 σ/l0 — about 14 σ/R for a 12³ drop — and drops do not flow; at 4.2 it is
@@ -163,6 +169,48 @@ pub struct Discretisation {
     pub max_particles: u64,
 }
 
+/// A paper's discretisation: the defaults it gives `h/l0` and `r_e/l0`.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Setting {
+    /// Natsui et al. 2021 (paper A): `h/l0 = 1.05` (§2.2), `r_e/l0 = 4.2` (Eq. 15's cut-off
+    /// read literally; physics.md §4).
+    #[default]
+    Natsui2021,
+    /// Natsui et al. 2016 (paper B): its "effective radius" of 4.0 d is the kernel's support
+    /// and, by its rule that the potential's radius equals the kernel's, also the potential's
+    /// cut-off: `h/l0 = 2.0` (support 2h = 4.0 l0), `r_e/l0 = 4.0`. Paper B's dimensionless
+    /// potential (its Eq. 9, in q = r/h) has the same shape — repulsive below d, zero force at
+    /// d and at the cut-off — and its energy coefficient is fixed here by the same lattice
+    /// normalisation `C = 2σ l0²/S` (physics.md §4, S/l0³ = 191.840 at 4.0), so only the two
+    /// radii differ. Paper B does not name its kernel; the scene's kernel is used.
+    Natsui2016,
+}
+
+impl Setting {
+    /// Default `h/l0` [-].
+    pub fn h_over_l0(self) -> f64 {
+        match self {
+            Setting::Natsui2021 => 1.05,
+            Setting::Natsui2016 => 2.0,
+        }
+    }
+    /// Default `r_e/l0` [-].
+    pub fn re_over_l0(self) -> f64 {
+        match self {
+            Setting::Natsui2021 => 4.2,
+            Setting::Natsui2016 => 4.0,
+        }
+    }
+    /// The TOML name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Setting::Natsui2021 => "natsui2021",
+            Setting::Natsui2016 => "natsui2016",
+        }
+    }
+}
+
 fn default_max_particles() -> u64 {
     20_000_000
 }
@@ -180,10 +228,10 @@ pub enum ParticleMass {
 }
 
 fn default_h_over_l0() -> f64 {
-    1.05
+    Setting::default().h_over_l0()
 }
 fn default_re_over_l0() -> f64 {
-    4.2
+    Setting::default().re_over_l0()
 }
 fn default_skin_over_l0() -> f64 {
     0.2
@@ -448,7 +496,12 @@ pub enum WallBoundary {
 impl Scene {
     /// Parses and validates a scene from TOML text.
     pub fn from_toml_str(text: &str) -> Result<Scene, SceneError> {
-        let scene: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
+        let mut value: toml::Table =
+            toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
+        apply_setting(&mut value)?;
+        let scene: Scene = value
+            .try_into()
+            .map_err(|e: toml::de::Error| SceneError::Parse(e.to_string()))?;
         scene.validate()?;
         Ok(scene)
     }
@@ -502,4 +555,28 @@ impl Scene {
             })
             .map(|i| i.tension)
     }
+}
+
+/// Fills `h_over_l0` and `re_over_l0` from `discretisation.setting` where the scene leaves them
+/// out (explicit values win).
+fn apply_setting(value: &mut toml::Table) -> Result<(), SceneError> {
+    let Some(toml::Value::Table(d)) = value.get_mut("discretisation") else {
+        return Ok(()); // the schema reports the missing table
+    };
+    let setting = match d.get("setting") {
+        None => Setting::default(),
+        Some(v) => v
+            .clone()
+            .try_into::<Setting>()
+            .map_err(|_| SceneError::Invalid {
+                field: "discretisation.setting".into(),
+                value: v.to_string(),
+                message: "unknown setting; use \"natsui2021\" or \"natsui2016\"".into(),
+            })?,
+    };
+    d.entry("h_over_l0")
+        .or_insert(toml::Value::Float(setting.h_over_l0()));
+    d.entry("re_over_l0")
+        .or_insert(toml::Value::Float(setting.re_over_l0()));
+    Ok(())
 }

@@ -207,3 +207,26 @@ fn errors_are_values_not_panics() {
     }
     let _ = SimError::Scene(solver::SceneError::Parse(String::new()));
 }
+
+#[test]
+fn setting_supplies_defaults_and_explicit_values_win() {
+    let d = |text: &str| {
+        let s = Scene::from_toml_str(text).unwrap();
+        (s.discretisation.h_over_l0, s.discretisation.re_over_l0)
+    };
+    // paper A's defaults without a setting
+    assert_eq!(d(&base()), (1.05, 4.2));
+    let b16 = base().replace("l0 = ", "setting = \"natsui2016\"\nl0 = ");
+    // paper B: support 2h = 4.0 l0 and r_e = 4.0 l0
+    assert_eq!(d(&b16), (2.0, 4.0));
+    let explicit = b16.replace("l0 = ", "h_over_l0 = 1.3\nl0 = ");
+    assert_eq!(d(&explicit), (1.3, 4.0));
+    // the resolved values survive a round trip through the serialised scene (checkpoints)
+    let s = Scene::from_toml_str(&b16).unwrap();
+    let again = Scene::from_toml_str(&toml::to_string(&s).unwrap()).unwrap();
+    assert_eq!(s, again);
+    assert_names(
+        &base().replace("l0 = ", "setting = \"natsui2019\"\nl0 = "),
+        &["discretisation.setting", "natsui2019"],
+    );
+}

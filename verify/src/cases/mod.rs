@@ -3,9 +3,12 @@
 mod cube_drop;
 mod doublet;
 mod hard_cases;
+mod impact;
+mod incline;
 pub mod paper_values;
 mod plate_eq23;
 pub mod scenes;
+pub mod substrate;
 mod water_oil_teflon;
 
 use crate::suite::Case;
@@ -18,6 +21,10 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(doublet::Doublet(doublet::Pair::MatteSlag)),
         Box::new(plate_eq23::PlateEq23),
         Box::new(water_oil_teflon::WaterOilTeflon),
+        Box::new(impact::Impact(impact::Drop::Water)),
+        Box::new(incline::Incline),
+        Box::new(impact::Impact(impact::Drop::Aluminium)),
+        Box::new(impact::Impact(impact::Drop::Iron)),
         Box::new(hard_cases::HardCases),
     ]
 }

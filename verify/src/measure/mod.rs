@@ -5,4 +5,5 @@ pub mod geometry;
 pub mod invariants;
 pub mod oscillation;
 pub mod shape;
+pub mod side_view;
 pub mod surface;

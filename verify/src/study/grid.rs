@@ -224,6 +224,16 @@ impl Point {
         self.problem.l0(self.resolution)
     }
 
+    /// Fluid particles, estimated from the shape's volume over l0³: n³ for the cube, the
+    /// hemisphere's (2/3)π n³ for the sessile drop of radius n l0.
+    pub fn estimated_particles(&self) -> usize {
+        let n = self.resolution as f64;
+        match self.problem {
+            Problem::CubeDrop => (n * n * n) as usize,
+            Problem::SessileDrop => (2.0 / 3.0 * std::f64::consts::PI * n * n * n) as usize,
+        }
+    }
+
     /// The scene of the point.
     pub fn scene(&self) -> Scene {
         let v = &self.variant;

@@ -255,33 +255,15 @@ pub fn fixture(n_side: usize, re_over_l0: f64, plate: bool) -> Simulation {
     sim
 }
 
-/// The force-loop input of the current state, built as `Simulation::evaluate` builds it.
+/// The force-loop input of the current state, as `Simulation::evaluate` builds it.
 pub fn force_input(sim: &Simulation) -> ForceInput<'_, K> {
-    let m = &sim.model;
-    let p = &sim.particles;
-    let (alpha1, alpha2) = m.effects.artificial_viscosity.unwrap_or((0.0, 0.0));
-    ForceInput {
-        kernel: m.kernel_of::<K>(),
-        h_m: m.h_m,
-        l0_m: m.l0_m,
-        r_e_m: m.r_e_m,
-        c_m_s: m.c_m_s,
-        alpha: (alpha1, alpha2),
-        gravity: m.gravity(),
-        mass: &m.mass,
-        mu_pair: &m.mu_pair,
-        coeff: &m.pairs.coeff,
-        n_phases: m.pairs.n_phases,
-        n_fluid: p.n_fluid,
-        pos: &p.pos,
-        vel: &p.vel,
-        rho: &p.rho,
-        pressure: &p.pressure,
-        vol: &p.vol,
-        phase: &p.phase,
-        wall_no_slip: &sim.wall_no_slip,
-        lists: &sim.search.lists,
-    }
+    ForceInput::new(
+        sim.model.kernel_of::<K>(),
+        &sim.model,
+        &sim.particles,
+        &sim.wall_no_slip,
+        &sim.search.lists,
+    )
 }
 
 /// A query of the lists: for every fluid particle, the neighbours within the kernel support

@@ -356,29 +356,9 @@ impl Simulation {
         self.timings.density_s += (t1 - t0).as_secs_f64();
 
         let e = &m.effects;
-        let (alpha1, alpha2) = e.artificial_viscosity.unwrap_or((0.0, 0.0));
-        let inp = forces::ForceInput {
-            kernel: k,
-            h_m: m.h_m,
-            l0_m: m.l0_m,
-            r_e_m: m.r_e_m,
-            c_m_s: m.c_m_s,
-            alpha: (alpha1, alpha2),
-            gravity: m.gravity(),
-            mass: &m.mass,
-            mu_pair: &m.mu_pair,
-            coeff: &m.pairs.coeff,
-            n_phases: m.pairs.n_phases,
-            n_fluid: nf,
-            pos: &p.pos,
-            vel: &p.vel,
-            rho: &p.rho,
-            pressure: &p.pressure,
-            vol: &p.vol,
-            phase: &p.phase,
-            wall_no_slip: &self.wall_no_slip,
-            lists,
-        };
+        // the accelerations are written while the rest of the state is read
+        let mut acc = std::mem::take(&mut p.acc);
+        let inp = forces::ForceInput::new(k, m, p, &self.wall_no_slip, lists);
         forces::dispatch(
             &inp,
             e.laminar_viscosity,
@@ -386,9 +366,10 @@ impl Simulation {
             e.interfacial_tension,
             e.walls,
             e.density == DensityScheme::Continuity,
-            &mut p.acc,
+            &mut acc,
             &mut self.drho_next,
         );
+        self.particles.acc = acc;
         self.timings.forces_s += t1.elapsed().as_secs_f64();
     }
 

@@ -208,7 +208,11 @@ fn main() {
             for case in all_cases() {
                 println!("{:<24} {}", case.name(), case.title());
                 println!("{:<24} source: {}", "", case.source());
-                println!("{:<24} effects: {}", "", case.effects().describe());
+                println!(
+                    "{:<24} effects: {}",
+                    "",
+                    verify::suite::DeclaredEffects::describe_declared(case.effects())
+                );
                 let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
                 println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
                 println!("{:<24} resolution: {}", "", case.resolution(fidelity));

@@ -17,8 +17,9 @@
 //! physics.md §3).
 
 use crate::kernel::Kernel;
+use crate::model::Model;
 use crate::neighbours::NeighbourLists;
-use crate::state::Vec3;
+use crate::state::{Particles, Vec3};
 use rayon::prelude::*;
 
 /// Inputs of the force loop, borrowed from the state and the model.
@@ -64,6 +65,42 @@ pub struct ForceInput<'a, K: Kernel> {
     pub wall_no_slip: &'a [bool],
     /// Neighbour lists.
     pub lists: &'a NeighbourLists,
+}
+
+impl<'a, K: Kernel> ForceInput<'a, K> {
+    /// The inputs of the state `p` under `model`: the one place they are gathered (the
+    /// simulation's step and the benchmarks both use it).
+    pub fn new(
+        kernel: K,
+        model: &'a Model,
+        p: &'a Particles,
+        wall_no_slip: &'a [bool],
+        lists: &'a NeighbourLists,
+    ) -> Self {
+        let m = model;
+        ForceInput {
+            kernel,
+            h_m: m.h_m,
+            l0_m: m.l0_m,
+            r_e_m: m.r_e_m,
+            c_m_s: m.c_m_s,
+            alpha: m.effects.artificial_viscosity.unwrap_or((0.0, 0.0)),
+            gravity: m.gravity(),
+            mass: &m.mass,
+            mu_pair: &m.mu_pair,
+            coeff: &m.pairs.coeff,
+            n_phases: m.pairs.n_phases,
+            n_fluid: p.n_fluid,
+            pos: &p.pos,
+            vel: &p.vel,
+            rho: &p.rho,
+            pressure: &p.pressure,
+            vol: &p.vol,
+            phase: &p.phase,
+            wall_no_slip,
+            lists,
+        }
+    }
 }
 
 /// Evaluates accelerations [m/s²] (and, with `CONT`, density rates [kg/(m³ s)]) of all fluid

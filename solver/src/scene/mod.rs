@@ -202,13 +202,6 @@ impl Setting {
             Setting::Natsui2016 => 4.0,
         }
     }
-    /// The TOML name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Setting::Natsui2021 => "natsui2021",
-            Setting::Natsui2016 => "natsui2016",
-        }
-    }
 }
 
 fn default_max_particles() -> u64 {
@@ -496,12 +489,10 @@ pub enum WallBoundary {
 impl Scene {
     /// Parses and validates a scene from TOML text.
     pub fn from_toml_str(text: &str) -> Result<Scene, SceneError> {
-        let mut value: toml::Table =
+        // parsed straight into the schema, so that its errors keep their line and column
+        let mut scene: Scene =
             toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
-        apply_setting(&mut value)?;
-        let scene: Scene = value
-            .try_into()
-            .map_err(|e: toml::de::Error| SceneError::Parse(e.to_string()))?;
+        apply_setting(&mut scene, text);
         scene.validate()?;
         Ok(scene)
     }
@@ -557,26 +548,22 @@ impl Scene {
     }
 }
 
-/// Fills `h_over_l0` and `re_over_l0` from `discretisation.setting` where the scene leaves them
-/// out (explicit values win).
-fn apply_setting(value: &mut toml::Table) -> Result<(), SceneError> {
-    let Some(toml::Value::Table(d)) = value.get_mut("discretisation") else {
-        return Ok(()); // the schema reports the missing table
+/// Replaces the defaults of `h_over_l0` and `re_over_l0` by those of `discretisation.setting`
+/// where `text` leaves them out (explicit values win). `text` has already been parsed into
+/// `scene`, so it is valid TOML.
+fn apply_setting(scene: &mut Scene, text: &str) {
+    let table: toml::Table = toml::from_str(text).unwrap_or_default();
+    let given = |key: &str| {
+        table
+            .get("discretisation")
+            .and_then(|d| d.get(key))
+            .is_some()
     };
-    let setting = match d.get("setting") {
-        None => Setting::default(),
-        Some(v) => v
-            .clone()
-            .try_into::<Setting>()
-            .map_err(|_| SceneError::Invalid {
-                field: "discretisation.setting".into(),
-                value: v.to_string(),
-                message: "unknown setting; use \"natsui2021\" or \"natsui2016\"".into(),
-            })?,
-    };
-    d.entry("h_over_l0")
-        .or_insert(toml::Value::Float(setting.h_over_l0()));
-    d.entry("re_over_l0")
-        .or_insert(toml::Value::Float(setting.re_over_l0()));
-    Ok(())
+    let d = &mut scene.discretisation;
+    if !given("h_over_l0") {
+        d.h_over_l0 = d.setting.h_over_l0();
+    }
+    if !given("re_over_l0") {
+        d.re_over_l0 = d.setting.re_over_l0();
+    }
 }

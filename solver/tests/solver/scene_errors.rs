@@ -227,6 +227,6 @@ fn setting_supplies_defaults_and_explicit_values_win() {
     assert_eq!(s, again);
     assert_names(
         &base().replace("l0 = ", "setting = \"natsui2019\"\nl0 = "),
-        &["discretisation.setting", "natsui2019"],
+        &["setting", "natsui2019", "line"],
     );
 }

@@ -52,14 +52,8 @@ impl Case for CubeDrop {
     fn source(&self) -> &'static str {
         "Natsui et al. 2021, Appendix, Fig. A-1 and Table A-1; Lamb (1932) §275"
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: false,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: false,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::FREE_DROP)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let n = side_particles(f);
@@ -131,14 +125,7 @@ impl Case for CubeDrop {
             } else {
                 None
             };
-            let status = if run.completed() {
-                String::new()
-            } else {
-                format!(
-                    "run did not complete: {}. ",
-                    run.info.error.clone().unwrap_or_default()
-                )
-            };
+            let status = run.status_note();
             let (period, gamma) = match &fit {
                 Ok(fit) => (fit.period_s, fit.damping_rate_per_s),
                 Err(_) => (f64::NAN, f64::NAN),

@@ -199,14 +199,8 @@ impl Case for Doublet {
             Pair::MatteSlag => "Natsui et al. 2021 §3.2, Figs. 11–15, Eq. 27, Table 1",
         }
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: false,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: false,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::FREE_DROP)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = Self::l0(f);
@@ -266,14 +260,7 @@ impl Case for Doublet {
             });
             let (g_eq, g_sd) = tail_stats(&g);
             eq_pts.push((s12, g_eq));
-            let status = if run.completed() {
-                String::new()
-            } else {
-                format!(
-                    "run did not complete: {}. ",
-                    run.info.error.clone().unwrap_or_default()
-                )
-            };
+            let status = run.status_note();
             let regime = neumann::regime(s1, s2, s12).map_err(anyhow::Error::msg)?;
             // equilibrium G1G2/R0
             let mut m =

@@ -93,15 +93,9 @@ impl Case for HardCases {
     fn source(&self) -> &'static str {
         "scenes/hard/*.toml (issue: hard cases stay stable)"
     }
-    fn effects(&self) -> DeclaredEffects {
-        // the scenes differ: checked per run below, not by one declaration
-        DeclaredEffects {
-            gravity: false,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: false,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        // the scenes differ (gravity, walls): each run's effects are in its scene
+        None
     }
     fn resolution(&self, f: Fidelity) -> String {
         match f {

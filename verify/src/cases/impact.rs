@@ -139,14 +139,8 @@ impl Case for Impact {
             Drop::Iron => "Natsui et al. 2016 (ISIJ Int. 56), Figs. 3–4; physics.md R17",
         }
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: true,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: true,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::ON_A_PLATE)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let s = self.spec();
@@ -212,6 +206,7 @@ impl Case for Impact {
             let theta_mean = substrate::column(run, "theta_side_mean_deg");
             let theta_left = substrate::column(run, "theta_left_deg");
             let theta_right = substrate::column(run, "theta_right_deg");
+            let theta_sphere = substrate::column(run, "theta_sphere_deg");
             let end = t.last().copied().unwrap_or(0.0);
             // equilibrium: the mean over the last fifth of the run
             let from = 0.8 * end;
@@ -222,7 +217,7 @@ impl Case for Impact {
             let volume_m3 = fluid as f64 * l0.powi(3);
             let yl = young_laplace::sessile_drop(volume_m3, rho, sigma, theta, G_M_S2)
                 .map_err(anyhow::Error::msg)?;
-            let status = substrate::run_status(run);
+            let status = run.status_note();
             let tail = format!("{status}mean over t ≥ {:.0} ms (last fifth)", from * 1e3);
             let paper = |key: &str| {
                 s.paper_section
@@ -342,6 +337,7 @@ impl Case for Impact {
                     (&theta_mean, "mean of left and right"),
                     (&theta_left, "left"),
                     (&theta_right, "right"),
+                    (&theta_sphere, "3-D sphere fit of the whole rim"),
                 ],
                 format!("{name} on {solid}: dynamic contact angle in the side view"),
                 "θ [deg]",

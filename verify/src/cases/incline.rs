@@ -61,14 +61,8 @@ impl Case for Incline {
     fn source(&self) -> &'static str {
         "Natsui et al. 2016 (ISIJ Int. 56), Fig. 1 and text"
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: true,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: true,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::ON_A_PLATE)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = l0(f);
@@ -144,7 +138,7 @@ impl Case for Incline {
             let (a_mean, a_osc) = substrate::tail_stats(&t, &adv, from);
             let (r_mean, r_osc) = substrate::tail_stats(&t, &rec, from);
             let (v_mean, _) = substrate::tail_stats(&t, &vx, from);
-            let status = substrate::run_status(run);
+            let status = run.status_note();
             let on_plate = x
                 .last()
                 .is_some_and(|&xe| xe * 1e-3 + 0.5 * DIAMETER_M < plate_x_max(f));

@@ -119,14 +119,8 @@ impl Case for PlateEq23 {
     fn source(&self) -> &'static str {
         "Natsui et al. 2021 §4, Eq. 23, Fig. 3(a)/(b), Figs. 16–19"
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: true,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: true,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::ON_A_PLATE)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = l0(f);
@@ -186,14 +180,7 @@ impl Case for PlateEq23 {
             };
             let ok = seen == contact_words(&expected)
                 || (boundary && (seen.starts_with("both") || seen == limit));
-            let status = if run.completed() {
-                String::new()
-            } else {
-                format!(
-                    "run did not complete: {}. ",
-                    run.info.error.clone().unwrap_or_default()
-                )
-            };
+            let status = run.status_note();
             metrics.push(
                 Metric::new(self.name(), format!("contact {}", run.id), "match", f64::from(u8::from(ok)))
                     .against(1.0, Tolerance { abs: 0.0, source: "the contact regime matches Eq. 23 or not".into() })

@@ -57,14 +57,8 @@ impl Case for WaterOilTeflon {
     fn source(&self) -> &'static str {
         "Natsui et al. 2021, Appendix, Fig. A-2, Eq. 23"
     }
-    fn effects(&self) -> DeclaredEffects {
-        DeclaredEffects {
-            gravity: true,
-            laminar_viscosity: true,
-            artificial_viscosity: true,
-            interfacial_tension: true,
-            walls: true,
-        }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        Some(DeclaredEffects::ON_A_PLATE)
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = l0(f);
@@ -110,14 +104,7 @@ impl Case for WaterOilTeflon {
             .map_err(anyhow::Error::msg)?;
         let cloud = run.last.cloud(l0);
         let classes = surface::classify(&cloud);
-        let status = if run.completed() {
-            String::new()
-        } else {
-            format!(
-                "run did not complete: {}. ",
-                run.info.error.clone().unwrap_or_default()
-            )
-        };
+        let status = run.status_note();
         if let SolidContact::TripleLine { theta12_deg } = expected {
             let m = geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0);
             metrics.push(

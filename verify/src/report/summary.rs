@@ -121,7 +121,11 @@ pub fn write_markdown(
         let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
         let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
         let _ = writeln!(s, "Source: {}.  ", case.source());
-        let _ = writeln!(s, "Effects: {}.  ", case.effects().describe());
+        let _ = writeln!(
+            s,
+            "Effects: {}.  ",
+            crate::suite::DeclaredEffects::describe_declared(case.effects())
+        );
         let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
         if ms.is_empty() {
             let _ = writeln!(s, "_No results: the case was not run._\n");

@@ -28,7 +28,7 @@ pub struct PointResult {
     pub wall_time_s: f64,
     /// Particle-steps per second [1/s].
     pub particle_steps_per_second: f64,
-    /// Mean neighbours per particle within the largest cut-off plus skin.
+    /// Mean neighbours per particle within the largest cut-off, max(2h, r_e) (skin excluded).
     pub mean_neighbours: f64,
     /// Peak resident memory of the run's process [bytes].
     pub peak_memory_bytes: Option<u64>,

@@ -57,6 +57,23 @@ pub struct DeclaredEffects {
 }
 
 impl DeclaredEffects {
+    /// A drop in zero gravity without walls: tension and both viscosities.
+    pub const FREE_DROP: DeclaredEffects = DeclaredEffects {
+        gravity: false,
+        laminar_viscosity: true,
+        artificial_viscosity: true,
+        interfacial_tension: true,
+        walls: false,
+    };
+    /// Drops on a wall under gravity: every effect.
+    pub const ON_A_PLATE: DeclaredEffects = DeclaredEffects {
+        gravity: true,
+        laminar_viscosity: true,
+        artificial_viscosity: true,
+        interfacial_tension: true,
+        walls: true,
+    };
+
     /// Whether `scene` builds exactly these effects.
     pub fn matches(&self, scene: &Scene) -> bool {
         let e = &scene.effects;
@@ -65,6 +82,14 @@ impl DeclaredEffects {
             && self.artificial_viscosity == e.artificial_viscosity.is_some()
             && self.interfacial_tension == e.interfacial_tension
             && self.walls != scene.walls.is_empty()
+    }
+
+    /// A case's declaration in words: its effects, or that they differ per run.
+    pub fn describe_declared(e: Option<DeclaredEffects>) -> String {
+        e.map_or_else(
+            || "different for each run (see each run's scene)".into(),
+            |e| e.describe(),
+        )
     }
 
     /// In words, for reports.
@@ -116,6 +141,19 @@ impl RunData {
     pub fn completed(&self) -> bool {
         self.info.status == crate::output::run_info::Status::Completed
     }
+
+    /// `"run did not complete: {error}. "` for a run that stopped early, else empty: the
+    /// prefix of every note measured on this run.
+    pub fn status_note(&self) -> String {
+        if self.completed() {
+            String::new()
+        } else {
+            format!(
+                "run did not complete: {}. ",
+                self.info.error.clone().unwrap_or_default()
+            )
+        }
+    }
 }
 
 /// A paper check.
@@ -126,8 +164,9 @@ pub trait Case: Sync {
     fn title(&self) -> &'static str;
     /// Where it comes from (paper, section, table/figure).
     fn source(&self) -> &'static str;
-    /// The effects its scenes are built with.
-    fn effects(&self) -> DeclaredEffects;
+    /// The effects its scenes are built with (checked against every scene), or None when its
+    /// runs differ (each run's effects are then in its scene and `run_info.json`).
+    fn effects(&self) -> Option<DeclaredEffects>;
     /// The resolution used at a fidelity, and why.
     fn resolution(&self, fidelity: Fidelity) -> String;
     /// The runs at a fidelity.

@@ -31,6 +31,8 @@ fn summation(c: &mut Criterion) {
             let p = &sim.particles;
             let kernel = m.kernel_of::<K>();
             let mut rho = vec![0.0; p.n_fluid];
+            let mut active = vec![0; p.n_fluid];
+            let active_radius = m.support_m.max(m.r_e_m);
             b.iter(|| {
                 density::summation(
                     &kernel,
@@ -39,7 +41,9 @@ fn summation(c: &mut Criterion) {
                     &m.rho0,
                     &sim.search.lists,
                     m.lattice_kernel_sum,
+                    active_radius,
                     &mut rho,
+                    &mut active,
                 );
                 black_box(&rho);
             })

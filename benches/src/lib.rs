@@ -262,7 +262,7 @@ pub fn force_input(sim: &Simulation) -> ForceInput<'_, K> {
         &sim.model,
         &sim.particles,
         &sim.wall_no_slip,
-        &sim.search.lists,
+        &sim.search,
     )
 }
 

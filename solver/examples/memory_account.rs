@@ -38,6 +38,7 @@ fn main() {
         + p.phase.capacity() as f64
         + p.id.capacity() as f64 * 4.0;
     let lists = sim.search.lists.memory_bytes() as f64;
-    println!("particles {:.0} B, lists {:.0} B ({} entries = {:.0} B used) per particle; RSS growth {:.0} B per particle",
-        parts / n, lists / n, sim.search.lists.entries(), sim.search.lists.entries() as f64 * 4.0 / n, (rss() - base) / n);
+    let index = sim.search.index_memory_bytes() as f64;
+    println!("particles {:.0} B, lists {:.0} B, keys and cell tables {:.0} B ({} entries = {:.0} B used) per particle; RSS growth {:.0} B per particle",
+        parts / n, lists / n, index / n, sim.search.lists.entries(), sim.search.lists.entries() as f64 * 4.0 / n, (rss() - base) / n);
 }

@@ -313,20 +313,29 @@ impl Simulation {
         let t0 = Instant::now();
         let m = &self.model;
         let k = K::new(m.h_m);
-        let lists = &self.search.lists;
+        let search = &mut self.search;
         let p = &mut self.particles;
         let nf = p.n_fluid;
         if m.effects.density == DensityScheme::Summation {
+            // the pairs that interact: within the support, or r_e with the potential
+            let active_radius = if m.effects.interfacial_tension {
+                m.support_m.max(m.r_e_m)
+            } else {
+                m.support_m
+            };
             density::summation(
                 &k,
                 &p.pos,
                 &p.phase,
                 &m.rho0,
-                lists,
+                &search.lists,
                 m.lattice_kernel_sum,
+                active_radius,
                 &mut p.rho[..nf],
+                &mut search.active,
             );
         }
+        let lists = &self.search.lists;
         let eos = m.eos;
         let clip = m.scene.density.negative_pressure == NegativePressure::Clip;
         p.pressure[..nf]
@@ -358,7 +367,7 @@ impl Simulation {
         let e = &m.effects;
         // the accelerations are written while the rest of the state is read
         let mut acc = std::mem::take(&mut p.acc);
-        let inp = forces::ForceInput::new(k, m, p, &self.wall_no_slip, lists);
+        let inp = forces::ForceInput::new(k, m, p, &self.wall_no_slip, &self.search);
         forces::dispatch(
             &inp,
             e.laminar_viscosity,

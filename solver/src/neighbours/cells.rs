@@ -3,7 +3,7 @@
 use crate::state::Vec3;
 
 /// Bits per axis in a key.
-const BITS: u32 = 21;
+pub(crate) const BITS: u32 = 21;
 /// Offset making cell coordinates non-negative.
 const OFFSET: i64 = 1 << (BITS - 1);
 const MASK: u64 = (1 << BITS) - 1;
@@ -53,4 +53,14 @@ pub(crate) fn offset_key(key: u64, dx: i64, dy: i64, dz: i64) -> u64 {
     let y = ((key >> BITS) & MASK) as i64 + dy;
     let z = ((key >> (2 * BITS)) & MASK) as i64 + dz;
     ((z as u64) << (2 * BITS)) | ((y as u64) << BITS) | x as u64
+}
+
+/// The integer cell coordinates `[x, y, z]` of `key` (offset to be non-negative).
+#[inline]
+pub(crate) fn decode(key: u64) -> [i64; 3] {
+    [
+        (key & MASK) as i64,
+        ((key >> BITS) & MASK) as i64,
+        ((key >> (2 * BITS)) & MASK) as i64,
+    ]
 }

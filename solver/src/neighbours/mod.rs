@@ -14,11 +14,13 @@
 //! particle order and positions, so results do not depend on the number of threads.
 
 mod cells;
+mod table;
 
 pub use cells::{cell_key, CellKeyError};
 
 use crate::state::Vec3;
 use rayon::prelude::*;
+use table::CellTable;
 
 /// Neighbour lists, stored in the segments the parallel build produced (no flattening copy:
 /// it would double the lists' memory at every rebuild).
@@ -69,6 +71,35 @@ impl NeighbourLists {
     }
 }
 
+/// The row ranges around a cell, from the dense table when it is built, else by galloping.
+enum Rows<'a> {
+    /// No particles (a scene without walls).
+    Empty,
+    Dense(&'a CellTable),
+    Sparse(Box<RowCursor<'a>>),
+}
+
+impl<'a> Rows<'a> {
+    fn new(keys: &'a [u64], table: &'a CellTable) -> Self {
+        if keys.is_empty() {
+            Rows::Empty
+        } else if table.is_built() {
+            Rows::Dense(table)
+        } else {
+            Rows::Sparse(Box::new(RowCursor::new(keys)))
+        }
+    }
+
+    #[inline]
+    fn ranges(&mut self, key: u64) -> [std::ops::Range<usize>; ROWS] {
+        match self {
+            Rows::Empty => Default::default(),
+            Rows::Dense(t) => t.ranges(key),
+            Rows::Sparse(c) => c.ranges(key),
+        }
+    }
+}
+
 /// The search: radii, cell keys and the current lists.
 #[derive(Clone, Debug)]
 pub struct NeighbourSearch {
@@ -86,9 +117,23 @@ pub struct NeighbourSearch {
     pub lists: NeighbourLists,
     /// Per segment: (near count, total count) of each particle (kept for reuse).
     counts: Vec<Vec<(u32, u32)>>,
+    /// Dense cell starts of the fluid and of the walls (unused when their box is too large).
+    fluid_table: CellTable,
+    wall_table: CellTable,
+    /// Whether dense tables may be used (tests switch them off to compare with galloping).
+    dense_tables: bool,
+    /// Per fluid particle: bit `k` says whether `lists.near(i)[k]` interacts at the current
+    /// positions (within the kernel support or `r_e`; `k < 64`, later entries are always
+    /// visited). A build sets every bit; the summation density narrows them at the positions
+    /// the forces are then evaluated at, so that the force loop skips the skin's entries (a
+    /// third of the list at the default skin) — they would add exact zeros.
+    pub active: Vec<u64>,
     /// Number of builds so far.
     pub builds: u64,
 }
+
+/// Bits of a particle's [`NeighbourSearch::active`] mask: its first `ACTIVE_BITS` near entries.
+pub const ACTIVE_BITS: usize = 64;
 
 /// Cells per cut-off: the neighbourhood of a cell spans `REACH` cells on each side.
 pub const REACH: i64 = 2;
@@ -109,6 +154,10 @@ impl NeighbourSearch {
             wall_keys: Vec::new(),
             lists: NeighbourLists::default(),
             counts: Vec::new(),
+            fluid_table: CellTable::default(),
+            wall_table: CellTable::default(),
+            dense_tables: true,
+            active: Vec::new(),
             builds: 0,
         }
     }
@@ -139,7 +188,11 @@ impl NeighbourSearch {
         self.fluid_keys = self.keys(&pos[..n_fluid])?;
         if self.wall_keys.len() != pos.len() - n_fluid {
             self.wall_keys = self.keys(&pos[n_fluid..])?;
+            let max = self.max_table_cells(self.wall_keys.len());
+            self.wall_table.rebuild(&self.wall_keys, max);
         }
+        let max = self.max_table_cells(n_fluid);
+        self.fluid_table.rebuild(&self.fluid_keys, max);
         debug_assert!(self.fluid_keys.windows(2).all(|w| w[0] <= w[1]));
         debug_assert!(self.wall_keys.windows(2).all(|w| w[0] <= w[1]));
         let near_cut = self.near_radius_m + self.skin_m;
@@ -147,6 +200,7 @@ impl NeighbourSearch {
         let (near2, far2) = (near_cut * near_cut, far_cut * far_cut);
         let fk = &self.fluid_keys;
         let wk = &self.wall_keys;
+        let (ft, wt) = (&self.fluid_table, &self.wall_table);
         let fluid_runs = runs_of(fk);
         let wall_runs = runs_of(wk);
         const RUNS_PER_SEGMENT: usize = 16;
@@ -167,7 +221,7 @@ impl NeighbourSearch {
                 list.clear();
                 counts.clear();
                 let (mut near_buf, mut far_buf): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
-                let (mut fc, mut wc) = (RowCursor::new(fk), RowCursor::new(wk));
+                let (mut fc, mut wc) = (Rows::new(fk, ft), Rows::new(wk, wt));
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(fk[s]);
                     let w_ranges = wc.ranges(fk[s]);
@@ -177,29 +231,27 @@ impl NeighbourSearch {
                         far_buf.resize(candidates, 0);
                     }
                     for i in s..e {
-                        let pi = pos[i];
-                        let (mut nn, mut nf) = (0usize, 0usize);
-                        // branch-free compaction: every candidate is written, the list grows
-                        // only when it passes (a quarter do, at random: a branch would mispredict)
-                        let mut scan = |j: usize| {
-                            let d2 = (pi - pos[j]).norm_squared();
-                            let is_near = (d2 < near2) & (j != i);
-                            let is_far = (d2 < far2) & (j != i) & !is_near;
-                            near_buf[nn] = j as u32;
-                            nn += usize::from(is_near);
-                            far_buf[nf] = j as u32;
-                            nf += usize::from(is_far);
+                        let (nn, nf) = if far2 > near2 {
+                            scan::<true>(
+                                pos,
+                                i,
+                                n_fluid,
+                                &f_ranges,
+                                &w_ranges,
+                                (near2, far2),
+                                (&mut near_buf, &mut far_buf),
+                            )
+                        } else {
+                            scan::<false>(
+                                pos,
+                                i,
+                                n_fluid,
+                                &f_ranges,
+                                &w_ranges,
+                                (near2, far2),
+                                (&mut near_buf, &mut far_buf),
+                            )
                         };
-                        for r in &f_ranges {
-                            for j in r.clone() {
-                                scan(j);
-                            }
-                        }
-                        for r in &w_ranges {
-                            for jw in r.clone() {
-                                scan(n_fluid + jw);
-                            }
-                        }
                         list.extend_from_slice(&near_buf[..nn]);
                         list.extend_from_slice(&far_buf[..nf]);
                         counts.push((nn as u32, (nn + nf) as u32));
@@ -215,7 +267,7 @@ impl NeighbourSearch {
             .for_each(|((list, counts), runs)| {
                 list.clear();
                 counts.clear();
-                let mut fc = RowCursor::new(fk);
+                let mut fc = Rows::new(fk, ft);
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(wk[s]);
                     let any_fluid = f_ranges.iter().any(|r| !r.is_empty());
@@ -257,8 +309,28 @@ impl NeighbourSearch {
             }
         }
         debug_assert_eq!(lists.loc.len(), pos.len());
+        self.active.clear();
+        self.active.resize(n_fluid, u64::MAX);
         self.builds += 1;
         Ok(())
+    }
+
+    /// The largest dense cell table kept for `n` particles: 4 cells per particle (16 bytes) — a
+    /// compact drop's box holds 1.4–2.6 (cube, sphere; cells of half the cut-off hold ~1.5
+    /// particles); a scattered splash gets the galloping search instead.
+    fn max_table_cells(&self, n: usize) -> usize {
+        if self.dense_tables {
+            4 * n + 4096
+        } else {
+            0
+        }
+    }
+
+    /// Bytes held by the search besides the lists: cell keys and dense cell tables.
+    pub fn index_memory_bytes(&self) -> usize {
+        8 * (self.fluid_keys.capacity() + self.wall_keys.capacity())
+            + self.fluid_table.memory_bytes()
+            + self.wall_table.memory_bytes()
     }
 
     /// Whether a fluid particle has moved more than half the skin since the last build.
@@ -269,6 +341,48 @@ impl NeighbourSearch {
             .zip(x_ref.par_iter())
             .any(|(p, r)| (p - r).norm_squared() >= limit2)
     }
+}
+
+/// The candidates of particle `i` (fluid `f_ranges`, then walls `w_ranges`) within the near
+/// and far cut-offs (squared, [m²]), written to the two buffers in candidate order; returns
+/// their counts. Without a far part (`FAR` false) only the near buffer is written.
+///
+/// Branch-free compaction: every candidate is written, the list grows only when it passes (a
+/// quarter do, at random: a branch would mispredict).
+#[inline(always)]
+fn scan<const FAR: bool>(
+    pos: &[Vec3],
+    i: usize,
+    n_fluid: usize,
+    f_ranges: &[std::ops::Range<usize>],
+    w_ranges: &[std::ops::Range<usize>],
+    (near2, far2): (f64, f64),
+    (near_buf, far_buf): (&mut [u32], &mut [u32]),
+) -> (usize, usize) {
+    let pi = pos[i];
+    let (mut nn, mut nf) = (0usize, 0usize);
+    let mut test = |j: usize| {
+        let d2 = (pi - pos[j]).norm_squared();
+        let is_near = (d2 < near2) & (j != i);
+        near_buf[nn] = j as u32;
+        nn += usize::from(is_near);
+        if FAR {
+            let is_far = (d2 < far2) & (j != i) & !is_near;
+            far_buf[nf] = j as u32;
+            nf += usize::from(is_far);
+        }
+    };
+    for r in f_ranges {
+        for j in r.clone() {
+            test(j);
+        }
+    }
+    for r in w_ranges {
+        for jw in r.clone() {
+            test(n_fluid + jw);
+        }
+    }
+    (nn, nf)
 }
 
 /// Runs `(start, end)` of equal keys in a sorted key array.

@@ -87,6 +87,33 @@ fn search_returns_exactly_the_brute_force_pairs() {
 }
 
 #[test]
+fn dense_tables_and_galloping_give_identical_lists() {
+    // the two ways of finding a cell's rows must agree entry for entry (same order: the
+    // results of a run must not depend on which one a scene's extent selects)
+    let (fluid, walls) = (
+        random_points(700, 1e-3, -3e-4, 11),
+        random_points(400, 1e-3, 2e-4, 12),
+    );
+    let lists = |dense: bool| {
+        let mut s = NeighbourSearch::new(1.0e-4, 2.0e-4, 1e-5);
+        s.dense_tables = dense;
+        let perm = s.sort_order(&fluid).unwrap();
+        let mut pos: Vec<Vec3> = perm.iter().map(|&i| fluid[i as usize]).collect();
+        let permw = s.sort_order(&walls).unwrap();
+        pos.extend(permw.iter().map(|&i| walls[i as usize]));
+        s.build(&pos, fluid.len()).unwrap();
+        assert_eq!(s.fluid_table.is_built(), dense);
+        assert_eq!(s.wall_table.is_built(), dense);
+        (0..pos.len())
+            .map(|i| (s.lists.near(i).to_vec(), s.lists.all(i).to_vec()))
+            .collect::<Vec<_>>()
+    };
+    let dense = lists(true);
+    assert_eq!(dense, lists(false));
+    assert!(dense.iter().map(|l| l.1.len()).sum::<usize>() > 10_000);
+}
+
+#[test]
 fn keys_order_rows_along_x() {
     let inv = 1.0 / 1e-4;
     let a = cell_key(&Vec3::new(0.5e-4, 0.0, 0.0), inv).unwrap();

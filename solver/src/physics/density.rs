@@ -2,7 +2,7 @@
 //! density (physics.md §2).
 
 use crate::kernel::Kernel;
-use crate::neighbours::NeighbourLists;
+use crate::neighbours::{NeighbourLists, ACTIVE_BITS};
 use crate::state::Vec3;
 use nalgebra::Vector4;
 use rayon::prelude::*;
@@ -12,6 +12,10 @@ use rayon::prelude::*;
 /// calibrated so that the undisturbed lattice has exactly `ρ0`, physics.md §1–2). Every
 /// neighbour counts, whatever its phase (walls complete the support), so density jumps between
 /// phases are not smeared.
+///
+/// On the way it writes each particle's mask of interacting near entries into `active` (see
+/// [`crate::neighbours::NeighbourSearch::active`]): those closer than `active_radius_m` [m]
+/// (the larger of the kernel support and `r_e`).
 #[allow(clippy::too_many_arguments)]
 pub fn summation<K: Kernel>(
     kernel: &K,
@@ -20,32 +24,48 @@ pub fn summation<K: Kernel>(
     rho0: &[f64],
     lists: &NeighbourLists,
     lattice_sum: f64,
+    active_radius_m: f64,
     rho_out: &mut [f64],
+    active: &mut [u64],
 ) {
     let support2 = kernel.support_m() * kernel.support_m();
+    let active2 = active_radius_m * active_radius_m;
     let w0 = kernel.w(0.0);
     const CHUNK: usize = 16;
-    rho_out.par_iter_mut().enumerate().for_each(|(i, rho)| {
-        let pi = pos[i];
-        let mut s = w0;
-        // gather, evaluate W branch-free over the chunk (vectorisable), then add in list order:
-        // the same sum, bit for bit, as a scalar loop
-        for chunk in lists.near(i).chunks(CHUNK) {
-            let mut r2 = [f64::INFINITY; CHUNK];
-            for (k, &j) in chunk.iter().enumerate() {
-                r2[k] = (pi - pos[j as usize]).norm_squared();
+    rho_out
+        .par_iter_mut()
+        .zip(active.par_iter_mut())
+        .enumerate()
+        .for_each(|(i, (rho, mask))| {
+            let pi = pos[i];
+            let mut s = w0;
+            let mut bits = 0u64;
+            // gather, evaluate W branch-free over the chunk (vectorisable), then add in list
+            // order: the same sum, bit for bit, as a scalar loop
+            for (c, chunk) in lists.near(i).chunks(CHUNK).enumerate() {
+                let mut r2 = [f64::INFINITY; CHUNK];
+                for (k, &j) in chunk.iter().enumerate() {
+                    r2[k] = (pi - pos[j as usize]).norm_squared();
+                }
+                let mut w = [0.0; CHUNK];
+                for k in 0..CHUNK {
+                    let v = kernel.w_inside(r2[k].min(support2).sqrt());
+                    w[k] = if r2[k] < support2 { v } else { 0.0 };
+                }
+                for wk in &w[..chunk.len()] {
+                    s += wk;
+                }
+                if c * CHUNK < ACTIVE_BITS {
+                    let mut m = 0u64;
+                    for (k, &d2) in r2.iter().enumerate() {
+                        m |= u64::from(d2 < active2) << k;
+                    }
+                    bits |= m << (c * CHUNK);
+                }
             }
-            let mut w = [0.0; CHUNK];
-            for k in 0..CHUNK {
-                let v = kernel.w_inside(r2[k].min(support2).sqrt());
-                w[k] = if r2[k] < support2 { v } else { 0.0 };
-            }
-            for wk in &w[..chunk.len()] {
-                s += wk;
-            }
-        }
-        *rho = rho0[phase[i] as usize] * s / lattice_sum; // Eq. (6), Natsui 2021 (number density)
-    });
+            *rho = rho0[phase[i] as usize] * s / lattice_sum; // Eq. (6), Natsui 2021 (number density)
+            *mask = bits;
+        });
 }
 
 /// Same-phase fluid neighbours of `i` within the kernel support, self excluded:
@@ -190,7 +210,19 @@ mod tests {
         // while the plain summation is 30 % short at a corner of the block
         let mut summ = vec![0.0; n];
         let lattice = crate::lattice::kernel_sum(&k, 1e-4);
-        summation(&k, &pos, &phase, &[1000.0], &lists, lattice, &mut summ);
+        let mut active = vec![0; n];
+        let support = k.support_m();
+        summation(
+            &k,
+            &pos,
+            &phase,
+            &[1000.0],
+            &lists,
+            lattice,
+            support,
+            &mut summ,
+            &mut active,
+        );
         assert!(summ.iter().fold(f64::INFINITY, |a, &b| a.min(b)) < 800.0);
     }
 

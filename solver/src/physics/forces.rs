@@ -18,7 +18,7 @@
 
 use crate::kernel::Kernel;
 use crate::model::Model;
-use crate::neighbours::NeighbourLists;
+use crate::neighbours::{NeighbourLists, NeighbourSearch, ACTIVE_BITS};
 use crate::state::{Particles, Vec3};
 use rayon::prelude::*;
 
@@ -65,6 +65,9 @@ pub struct ForceInput<'a, K: Kernel> {
     pub wall_no_slip: &'a [bool],
     /// Neighbour lists.
     pub lists: &'a NeighbourLists,
+    /// Per fluid particle: which of its first near entries interact
+    /// ([`NeighbourSearch::active`]).
+    pub active: &'a [u64],
 }
 
 impl<'a, K: Kernel> ForceInput<'a, K> {
@@ -75,7 +78,7 @@ impl<'a, K: Kernel> ForceInput<'a, K> {
         model: &'a Model,
         p: &'a Particles,
         wall_no_slip: &'a [bool],
-        lists: &'a NeighbourLists,
+        search: &'a NeighbourSearch,
     ) -> Self {
         let m = model;
         ForceInput {
@@ -98,7 +101,8 @@ impl<'a, K: Kernel> ForceInput<'a, K> {
             vol: &p.vol,
             phase: &p.phase,
             wall_no_slip,
-            lists,
+            lists: &search.lists,
+            active: &search.active,
         }
     }
 }
@@ -135,7 +139,7 @@ pub fn fluid_forces<
     let (pos, vel, rho, pre, vol, phase) =
         (inp.pos, inp.vel, inp.rho, inp.pressure, inp.vol, inp.phase);
 
-    let body = |i: usize| -> (Vec3, f64) {
+    let body = |g: &mut Gather<CHUNK>, i: usize| -> (Vec3, f64) {
         let pi = pos[i];
         let vi = vel[i];
         let ph_i = phase[i] as usize;
@@ -148,12 +152,20 @@ pub fn fluid_forces<
         let mu_row = &inp.mu_pair[ph_i * nph..(ph_i + 1) * nph];
         let mut f = Vec3::zeros();
         let mut dr = 0.0;
-        for chunk in inp.lists.near(i).chunks(CHUNK) {
-            let g = Gather::<CHUNK>::of::<VISC, AV, IT, WALL, CONT>(
-                chunk, pi, vi, inp, coeff_row, mu_row,
-            );
-            // every pair term of the chunk, branch-free (the compiler vectorises this loop;
-            // padded lanes have r = 0 and contribute exact zeros)
+        // the interacting entries among the first ACTIVE_BITS (in list order), then the rest
+        let near = inp.lists.near(i);
+        let (masked, rest) = near.split_at(near.len().min(ACTIVE_BITS));
+        let (mut idx, mut n_active) = ([0u32; ACTIVE_BITS], 0);
+        let mut bits = inp.active[i] & low_bits(masked.len());
+        while bits != 0 {
+            idx[n_active] = masked[bits.trailing_zeros() as usize];
+            n_active += 1;
+            bits &= bits - 1;
+        }
+        for chunk in idx[..n_active].chunks(CHUNK).chain(rest.chunks(CHUNK)) {
+            g.fill::<VISC, AV, IT, WALL, CONT>(chunk, pi, vi, inp, coeff_row, mu_row);
+            // every pair term of the chunk, branch-free (the compiler vectorises this loop);
+            // lanes past the chunk's end hold a previous chunk's values: computed, never added
             let (mut ca, mut cb, mut cd) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for n in 0..CHUNK {
                 let r2 = g.dx[n] * g.dx[n] + g.dy[n] * g.dy[n] + g.dz[n] * g.dz[n];
@@ -179,8 +191,9 @@ pub fn fluid_forces<
                 }
                 let vr = g.vx[n] * g.dx[n] + g.vy[n] * g.dy[n] + g.vz[n] * g.dz[n];
                 if AV {
-                    let phi = h * vr / (r2 + eta2); // Eq. (13), Natsui 2021
-                                                    // Eq. (12), Natsui 2021 with m_i m_j Π_ij (physics.md §3)
+                    // Eq. (13), Natsui 2021
+                    let phi = h * vr / (r2 + eta2);
+                    // Eq. (12), Natsui 2021 with m_i m_j Π_ij (physics.md §3)
                     let pi_ij =
                         (-alpha1 * c_s * phi + alpha2 * phi * phi) / (0.5 * (rho_i + g.rho[n]));
                     let v = m_i * g.m[n] * pi_ij * dw_r;
@@ -216,24 +229,35 @@ pub fn fluid_forces<
         (f / m_i + inp.gravity, rho_i * dr)
     };
 
+    // one gather buffer per rayon job, not per chunk (zeroing it per chunk cost 4 % of a step)
     if CONT {
         acc.par_iter_mut()
             .zip(drho.par_iter_mut())
             .enumerate()
-            .for_each(|(i, (a, d))| {
-                let (ai, di) = body(i);
+            .for_each_init(Gather::new, |g, (i, (a, d))| {
+                let (ai, di) = body(g, i);
                 *a = ai;
                 *d = di;
             });
     } else {
         acc.par_iter_mut()
             .enumerate()
-            .for_each(|(i, a)| *a = body(i).0);
+            .for_each_init(Gather::new, |g, (i, a)| *a = body(g, i).0);
+    }
+}
+
+/// The mask of the lowest `n` bits (`n ≤ 64`).
+#[inline(always)]
+fn low_bits(n: usize) -> u64 {
+    if n >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << n) - 1
     }
 }
 
 /// Neighbours processed together by the pair loops.
-const CHUNK: usize = 16;
+const CHUNK: usize = 8;
 
 /// One chunk of a particle's neighbours, gathered into arrays: the pair arithmetic then runs
 /// over the arrays without indirection or branches.
@@ -265,17 +289,9 @@ struct Gather<const N: usize> {
 }
 
 impl<const N: usize> Gather<N> {
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn of<const VISC: bool, const AV: bool, const IT: bool, const WALL: bool, const CONT: bool>(
-        chunk: &[u32],
-        pi: Vec3,
-        vi: Vec3,
-        inp: &ForceInput<impl Kernel>,
-        coeff_row: &[f64],
-        mu_row: &[f64],
-    ) -> Self {
-        let mut g = Gather {
+    /// An empty buffer (lanes not filled by the current chunk are computed but never added).
+    fn new() -> Self {
+        Gather {
             dx: [0.0; N],
             dy: [0.0; N],
             dz: [0.0; N],
@@ -290,7 +306,29 @@ impl<const N: usize> Gather<N> {
             mu: [0.0; N],
             c: [0.0; N],
             av: [false; N],
-        };
+        }
+    }
+
+    /// Gathers the neighbours `chunk` (at most `N`) of a particle at `pi` [m] moving at `vi`
+    /// [m/s] into lanes `0..chunk.len()`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn fill<
+        const VISC: bool,
+        const AV: bool,
+        const IT: bool,
+        const WALL: bool,
+        const CONT: bool,
+    >(
+        &mut self,
+        chunk: &[u32],
+        pi: Vec3,
+        vi: Vec3,
+        inp: &ForceInput<impl Kernel>,
+        coeff_row: &[f64],
+        mu_row: &[f64],
+    ) {
+        let g = self;
         for (n, &j) in chunk.iter().enumerate() {
             let j = j as usize;
             let d = pi - inp.pos[j];
@@ -322,7 +360,6 @@ impl<const N: usize> Gather<N> {
                 g.c[n] = coeff_row[ph];
             }
         }
-        g
     }
 }
 

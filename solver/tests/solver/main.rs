@@ -1,6 +1,7 @@
 //! Integration tests of the solver: one binary, a module per area. Each test states the
 //! physics it expects and where its tolerance comes from.
 
+mod active_pairs;
 mod checkpoint;
 mod common;
 mod conservation;

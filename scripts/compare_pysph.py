@@ -251,7 +251,8 @@ def cmd_summarise(a):
         f"liquid of the same density (4/3)π({max(re_l0, support_l0):.2f})³ = "
         f"{4.0 / 3.0 * math.pi * max(re_l0, support_l0) ** 3:.1f}; surface particles have fewer. The "
         f"Verlet lists also hold the skin's shell (radius {list_l0:.2f} l0, {us_lat_list:.1f} on "
-        "the lattice), which the pair loop visits but which is not counted."
+        "the lattice), which the density sum visits (it marks the entries that interact) and "
+        "the force loop skips; the shell is not counted."
     )
     lines.append(f"- Our effects: {', '.join(us[0]['effects'])}.")
     lines.append(f"- Our revision: {us[0]['git_revision']}.")

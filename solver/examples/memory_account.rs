@@ -1,4 +1,5 @@
 //! Diagnostic: bytes per particle held by each structure after some steps, against the RSS.
+//! Usage: `cargo run --release -p solver --example memory_account -- SCENE.toml [steps]`.
 fn rss() -> f64 {
     let s = std::fs::read_to_string("/proc/self/status").unwrap();
     let kb = |k: &str| {
@@ -24,7 +25,9 @@ fn main() {
         (rss() - base) / sim.particles.n_fluid as f64,
         s.lines().find(|l| l.starts_with("VmHWM")).unwrap()
     );
-    for _ in 0..300 {
+    // steps: second argument (default 300; the 160 k bench cube is built for ~85)
+    let steps: usize = std::env::args().nth(2).map_or(300, |s| s.parse().unwrap());
+    for _ in 0..steps {
         sim.step(f64::INFINITY).unwrap();
     }
     let p = &sim.particles;

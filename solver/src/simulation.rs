@@ -317,12 +317,9 @@ impl Simulation {
         let p = &mut self.particles;
         let nf = p.n_fluid;
         if m.effects.density == DensityScheme::Summation {
-            // the pairs that interact: within the support, or r_e with the potential
-            let active_radius = if m.effects.interfacial_tension {
-                m.support_m.max(m.r_e_m)
-            } else {
-                m.support_m
-            };
+            // the pairs that interact: within the search's far radius — the support, or r_e
+            // with the potential if larger
+            let active_radius = search.far_radius_m;
             density::summation(
                 &k,
                 &p.pos,

@@ -3,7 +3,7 @@
 use crate::state::Vec3;
 
 /// Bits per axis in a key.
-pub(crate) const BITS: u32 = 21;
+const BITS: u32 = 21;
 /// Offset making cell coordinates non-negative.
 const OFFSET: i64 = 1 << (BITS - 1);
 const MASK: u64 = (1 << BITS) - 1;

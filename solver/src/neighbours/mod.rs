@@ -222,6 +222,21 @@ impl NeighbourSearch {
                 counts.clear();
                 let (mut near_buf, mut far_buf): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
                 let (mut fc, mut wc) = (Rows::new(fk, ft), Rows::new(wk, wt));
+                // without a far part (r_e ≤ support) only the near buffer is written
+                type Scan = fn(
+                    &[Vec3],
+                    usize,
+                    usize,
+                    &[std::ops::Range<usize>],
+                    &[std::ops::Range<usize>],
+                    (f64, f64),
+                    (&mut [u32], &mut [u32]),
+                ) -> (usize, usize);
+                let scan_fluid: Scan = if far2 > near2 {
+                    scan::<true>
+                } else {
+                    scan::<false>
+                };
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(fk[s]);
                     let w_ranges = wc.ranges(fk[s]);
@@ -231,27 +246,15 @@ impl NeighbourSearch {
                         far_buf.resize(candidates, 0);
                     }
                     for i in s..e {
-                        let (nn, nf) = if far2 > near2 {
-                            scan::<true>(
-                                pos,
-                                i,
-                                n_fluid,
-                                &f_ranges,
-                                &w_ranges,
-                                (near2, far2),
-                                (&mut near_buf, &mut far_buf),
-                            )
-                        } else {
-                            scan::<false>(
-                                pos,
-                                i,
-                                n_fluid,
-                                &f_ranges,
-                                &w_ranges,
-                                (near2, far2),
-                                (&mut near_buf, &mut far_buf),
-                            )
-                        };
+                        let (nn, nf) = scan_fluid(
+                            pos,
+                            i,
+                            n_fluid,
+                            &f_ranges,
+                            &w_ranges,
+                            (near2, far2),
+                            (&mut near_buf, &mut far_buf),
+                        );
                         list.extend_from_slice(&near_buf[..nn]);
                         list.extend_from_slice(&far_buf[..nf]);
                         counts.push((nn as u32, (nn + nf) as u32));
@@ -268,23 +271,25 @@ impl NeighbourSearch {
                 list.clear();
                 counts.clear();
                 let mut fc = Rows::new(fk, ft);
+                let mut buf: Vec<u32> = Vec::new();
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(wk[s]);
-                    let any_fluid = f_ranges.iter().any(|r| !r.is_empty());
+                    let candidates: usize = f_ranges.iter().map(|r| r.len()).sum();
+                    if buf.len() < candidates {
+                        buf.resize(candidates, 0);
+                    }
                     for iw in s..e {
-                        let before = list.len();
-                        if any_fluid {
-                            let pi = pos[n_fluid + iw];
-                            for r in &f_ranges {
-                                for j in r.clone() {
-                                    if (pi - pos[j]).norm_squared() < near2 {
-                                        list.push(j as u32);
-                                    }
-                                }
-                            }
-                        }
-                        let n = (list.len() - before) as u32;
-                        counts.push((n, n));
+                        let (n, _) = scan::<false>(
+                            pos,
+                            n_fluid + iw,
+                            n_fluid,
+                            &f_ranges,
+                            &[],
+                            (near2, near2),
+                            (&mut buf, &mut []),
+                        );
+                        list.extend_from_slice(&buf[..n]);
+                        counts.push((n as u32, n as u32));
                     }
                 }
             });
@@ -343,9 +348,10 @@ impl NeighbourSearch {
     }
 }
 
-/// The candidates of particle `i` (fluid `f_ranges`, then walls `w_ranges`) within the near
-/// and far cut-offs (squared, [m²]), written to the two buffers in candidate order; returns
-/// their counts. Without a far part (`FAR` false) only the near buffer is written.
+/// The candidates of particle `i` (fluid `f_ranges`, then walls `w_ranges` offset by `n_fluid`)
+/// within the near and far cut-offs (squared, [m²]), written to the two buffers in candidate
+/// order; returns their counts. Without a far part (`FAR` false) only the near buffer is written
+/// (a wall particle's list: fluid neighbours within the near cut-off).
 ///
 /// Branch-free compaction: every candidate is written, the list grows only when it passes (a
 /// quarter do, at random: a branch would mispredict).

@@ -5,7 +5,7 @@
 //! in constant time per row; the search uses it whenever the box holds few enough cells (a
 //! splash whose drops fly far apart makes the box huge: the search then gallops).
 
-use super::cells::{decode, BITS};
+use super::cells::decode;
 use super::{REACH, ROWS};
 use rayon::prelude::*;
 use std::ops::Range;
@@ -115,6 +115,3 @@ impl CellTable {
         4 * self.start.capacity()
     }
 }
-
-// the coordinates of a key fit in an i64 with room for the REACH offsets
-const _: () = assert!(BITS < 62);

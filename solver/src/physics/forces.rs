@@ -139,7 +139,7 @@ pub fn fluid_forces<
     let (pos, vel, rho, pre, vol, phase) =
         (inp.pos, inp.vel, inp.rho, inp.pressure, inp.vol, inp.phase);
 
-    let body = |g: &mut Gather<CHUNK>, i: usize| -> (Vec3, f64) {
+    let body = |(g, idx): &mut Buffers, i: usize| -> (Vec3, f64) {
         let pi = pos[i];
         let vi = vel[i];
         let ph_i = phase[i] as usize;
@@ -156,7 +156,7 @@ pub fn fluid_forces<
         // when all of them interact (r_e beyond the support), the list itself
         let near = inp.lists.near(i);
         let (masked, rest) = near.split_at(near.len().min(ACTIVE_BITS));
-        let (mut idx, mut n_active) = ([0u32; ACTIVE_BITS], 0);
+        let mut n_active = 0;
         let all = low_bits(masked.len());
         let mut bits = inp.active[i] & all;
         let visit: &[u32] = if bits == all {
@@ -236,20 +236,23 @@ pub fn fluid_forces<
         (f / m_i + inp.gravity, rho_i * dr)
     };
 
-    // one gather buffer per rayon job, not per chunk (zeroing it per chunk cost 4 % of a step)
+    // one set of buffers per rayon job, not per chunk or particle (zeroing the gather buffer per
+    // chunk cost 4 % of a step)
+    type Buffers = (Gather<CHUNK>, [u32; ACTIVE_BITS]);
+    let buffers = || (Gather::new(), [0u32; ACTIVE_BITS]);
     if CONT {
         acc.par_iter_mut()
             .zip(drho.par_iter_mut())
             .enumerate()
-            .for_each_init(Gather::new, |g, (i, (a, d))| {
-                let (ai, di) = body(g, i);
+            .for_each_init(buffers, |b, (i, (a, d))| {
+                let (ai, di) = body(b, i);
                 *a = ai;
                 *d = di;
             });
     } else {
         acc.par_iter_mut()
             .enumerate()
-            .for_each_init(Gather::new, |g, (i, a)| *a = body(g, i).0);
+            .for_each_init(buffers, |b, (i, a)| *a = body(b, i).0);
     }
 }
 

@@ -7,8 +7,9 @@
 //!   where particles move at most half the skin between builds, the sort sees nearly sorted
 //!   keys.
 //! - `neighbours/query/{20k,160k}/re{2.1,4.2}`: one pass over every fluid particle's lists
-//!   with the distance test (near part against the support, far part against `r_e`) — the
-//!   traversal cost every pair loop pays, without physics.
+//!   with the distance test against the largest interaction radius
+//!   (`Simulation::mean_neighbours`) — the traversal cost every pair loop pays, without
+//!   physics.
 //!
 //! Inputs: the seeded, perturbed matte cubes of `benches::fixture`. Throughput is in fluid
 //! particles, so criterion's elements/s are particle-updates per second.
@@ -18,7 +19,7 @@
 
 mod common;
 
-use benches::{fixture, query_pairs, re_label, rebuild_neighbours, sampling, CUTOFFS, SIZES};
+use benches::{fixture, re_label, sampling, CUTOFFS, SIZES};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::cell::OnceCell;
 use std::hint::black_box;
@@ -36,7 +37,7 @@ fn neighbours(c: &mut Criterion) {
             common::configure(&mut group, sampling(n_side, false));
             group.bench_function(BenchmarkId::new("query", &id), |b| {
                 let sim = sim.get_or_init(make);
-                b.iter(|| black_box(query_pairs(sim)))
+                b.iter(|| black_box(sim.mean_neighbours()))
             });
             // up to a second per rebuild at 160k: flat sampling with a longer target
             common::configure(&mut group, sampling(n_side, true));
@@ -44,7 +45,8 @@ fn neighbours(c: &mut Criterion) {
                 sim.get_or_init(make);
                 let sim = sim.get_mut().expect("initialised");
                 b.iter(|| {
-                    rebuild_neighbours(sim);
+                    sim.rebuild_neighbours()
+                        .expect("benchmark particles stay on the cell grid");
                     black_box(sim.search.lists.entries())
                 })
             });

@@ -16,8 +16,7 @@
 //! under `target/criterion/`.
 
 use solver::kernel::{KernelKind, WendlandC2};
-use solver::physics::forces::ForceInput;
-use solver::state::{Particles, Vec3};
+use solver::state::Vec3;
 use solver::{Scene, Simulation};
 use std::time::Duration;
 
@@ -183,57 +182,6 @@ impl Lcg {
     }
 }
 
-/// Reorders the fluid particles: new index `k` takes old index `perm[k]` — a copy of the
-/// crate-private `Particles::permute_fluid` (a parallel gather per array; here on scoped
-/// threads, one chunk per available thread, as the crate's rayon is not a dependency of the
-/// benchmarks).
-pub fn permute_fluid(p: &mut Particles, perm: &[u32]) {
-    fn gather<T: Copy + Send + Sync>(v: &mut [T], perm: &[u32]) {
-        if v.is_empty() {
-            return;
-        }
-        let old: Vec<T> = v[..perm.len()].to_vec();
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-        let per = perm.len().div_ceil(threads).max(1);
-        let old = &old;
-        std::thread::scope(|sc| {
-            for (dst, idx) in v[..perm.len()].chunks_mut(per).zip(perm.chunks(per)) {
-                sc.spawn(move || {
-                    for (x, &k) in dst.iter_mut().zip(idx) {
-                        *x = old[k as usize];
-                    }
-                });
-            }
-        });
-    }
-    gather(&mut p.pos, perm);
-    gather(&mut p.vel, perm);
-    gather(&mut p.acc, perm);
-    gather(&mut p.rho, perm);
-    gather(&mut p.drho, perm);
-    gather(&mut p.pressure, perm);
-    gather(&mut p.vol, perm);
-    gather(&mut p.phase, perm);
-    gather(&mut p.id, perm);
-    gather(&mut p.x_ref, perm);
-}
-
-/// Re-sorts the fluid particles by cell and rebuilds the neighbour lists, as the private
-/// `Simulation::rebuild_neighbours` does (the work of the `neighbours/rebuild` benchmark).
-pub fn rebuild_neighbours(sim: &mut Simulation) {
-    let nf = sim.particles.n_fluid;
-    let perm = sim
-        .search
-        .sort_order(&sim.particles.pos[..nf])
-        .expect("benchmark particles stay on the cell grid");
-    permute_fluid(&mut sim.particles, &perm);
-    let p = &mut sim.particles;
-    p.x_ref.copy_from_slice(&p.pos[..nf]);
-    sim.search
-        .build(&p.pos, nf)
-        .expect("benchmark particles stay on the cell grid");
-}
-
 /// The benchmark state: the scene of [`scene_toml`] built, its fluid perturbed (seeded), the
 /// lists rebuilt and one time step taken.
 pub fn fixture(n_side: usize, re_over_l0: f64, plate: bool) -> Simulation {
@@ -249,67 +197,9 @@ pub fn fixture(n_side: usize, re_over_l0: f64, plate: bool) -> Simulation {
         p.pos[i] += rng.vec(0.05 * l0);
         p.vel[i] = rng.vec(0.05);
     }
-    rebuild_neighbours(&mut sim);
+    sim.rebuild_neighbours()
+        .expect("benchmark particles stay on the cell grid");
     sim.step(f64::INFINITY)
         .expect("one step of the benchmark scene");
     sim
-}
-
-/// The force-loop input of the current state, as `Simulation::evaluate` builds it.
-pub fn force_input(sim: &Simulation) -> ForceInput<'_, K> {
-    ForceInput::new(
-        sim.model.kernel_of::<K>(),
-        &sim.model,
-        &sim.particles,
-        &sim.wall_no_slip,
-        &sim.search,
-    )
-}
-
-/// A query of the lists: for every fluid particle, the neighbours within the kernel support
-/// (near part) and within the potential cut-off (far part), counted by distance — the list
-/// traversal and distance test every pair loop pays, without physics. Parallel over fluid
-/// particles (one chunk per available thread); returns the number of pairs found.
-pub fn query_pairs(sim: &Simulation) -> u64 {
-    let lists = &sim.search.lists;
-    let pos = &sim.particles.pos;
-    let nf = sim.particles.n_fluid;
-    let s = sim.model.support_m;
-    let (s2, re2) = (s * s, sim.model.r_e_m * sim.model.r_e_m);
-    let count = |range: std::ops::Range<usize>| -> u64 {
-        let mut n = 0u64;
-        for i in range {
-            let pi = pos[i];
-            for &j in lists.near(i) {
-                n += u64::from((pi - pos[j as usize]).norm_squared() < s2);
-            }
-            for &j in lists.far(i) {
-                n += u64::from((pi - pos[j as usize]).norm_squared() < re2);
-            }
-        }
-        n
-    };
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let per = nf.div_ceil(threads * 8).max(1);
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|sc| {
-        let handles: Vec<_> = (0..threads)
-            .map(|_| {
-                sc.spawn(|| {
-                    let mut n = 0;
-                    loop {
-                        let a = next.fetch_add(per, std::sync::atomic::Ordering::Relaxed);
-                        if a >= nf {
-                            return n;
-                        }
-                        n += count(a..(a + per).min(nf));
-                    }
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().expect("query thread"))
-            .sum()
-    })
 }

@@ -3,13 +3,11 @@
 //!
 //! The neighbour lists are not stored: they are rebuilt from the positions at the last build
 //! (`Particles::x_ref`) in the stored particle order, which reproduces them exactly. The model
-//! is rebuilt from the scene. Writing the bytes is the caller's business (`verify` uses a
+//! is rebuilt from the scene by the same assembly as a new run ([`Simulation::new`]). Writing the bytes is the caller's business (`verify` uses a
 //! compact binary encoding and an atomic rename).
 
 use crate::error::SimError;
-use crate::model::Model;
-use crate::neighbours::NeighbourSearch;
-use crate::scene::Scene;
+use crate::scene::{Scene, SceneError};
 use crate::simulation::{Simulation, StepTimings};
 use crate::state::Particles;
 use serde::{Deserialize, Serialize};
@@ -68,7 +66,7 @@ impl Simulation {
     pub fn checkpoint(&self) -> Checkpoint {
         Checkpoint {
             version: VERSION,
-            scene: self.model.scene.clone(),
+            scene: self.scene.clone(),
             particles: self.particles.clone(),
             wall_no_slip: self.wall_no_slip.clone(),
             time_s: self.time_s,
@@ -85,22 +83,20 @@ impl Simulation {
     /// Continues from a checkpoint.
     pub fn resume(c: Checkpoint) -> Result<Simulation, SimError> {
         if c.version != VERSION {
-            return Err(crate::scene::SceneError::invalid(
+            return Err(SceneError::invalid(
                 "checkpoint.version",
                 c.version,
                 format!("this build reads version {VERSION}"),
             )
             .into());
         }
-        c.scene.validate()?;
-        let model = Model::from_scene(&c.scene)?;
-        let (fresh, _, inventory) = crate::setup::build_particles(&c.scene, &model)?;
-        let p = c.particles;
+        let mut sim = Simulation::assemble(&c.scene)?;
+        let (p, fresh) = (c.particles, &sim.particles);
         if p.n_fluid != fresh.n_fluid
             || p.len() != fresh.len()
             || c.wall_no_slip.len() != p.n_wall()
         {
-            return Err(crate::scene::SceneError::invalid(
+            return Err(SceneError::invalid(
                 "checkpoint.particles",
                 format!("{} fluid / {} total", p.n_fluid, p.len()),
                 format!(
@@ -111,38 +107,21 @@ impl Simulation {
             )
             .into());
         }
-        let far = if model.effects.interfacial_tension {
-            model.r_e_m
-        } else {
-            model.support_m
-        };
-        let skin = c.scene.discretisation.neighbour_skin_over_l0 * model.l0_m;
-        let mut search = NeighbourSearch::new(model.support_m, far, skin);
         // the lists of the last build: positions then, same order
         let mut at_build = p.x_ref.clone();
         at_build.extend_from_slice(&p.pos[p.n_fluid..]);
-        search
+        sim.search
             .build(&at_build, p.n_fluid)
             .map_err(|source| SimError::Escaped {
                 step: c.step,
                 source,
             })?;
-        search.builds = c.builds;
-        let n_fluid = if c.scene.density.scheme == crate::scene::DensityScheme::Continuity {
-            p.n_fluid
-        } else {
-            0
-        };
-        Ok(Simulation::from_parts(
-            model,
-            p,
-            search,
-            c.wall_no_slip,
-            inventory,
-            (c.time_s, c.step, c.last_dt_s),
-            (c.max_speed2, c.max_acc2, c.first_dt_s),
-            c.timings,
-            n_fluid,
-        ))
+        sim.search.builds = c.builds;
+        sim.particles = p;
+        sim.wall_no_slip = c.wall_no_slip;
+        (sim.time_s, sim.step, sim.last_dt_s) = (c.time_s, c.step, c.last_dt_s);
+        (sim.max_speed2, sim.max_acc2, sim.first_dt_s) = (c.max_speed2, c.max_acc2, c.first_dt_s);
+        sim.timings = c.timings;
+        Ok(sim)
     }
 }

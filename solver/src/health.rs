@@ -101,7 +101,7 @@ pub(crate) struct Context<'a> {
 pub(crate) fn check(c: &Context) -> Result<(), SimError> {
     let m = c.model;
     let p = c.particles;
-    let h = &m.scene.health;
+    let h = &m.health;
     let fail = |i: usize, quantity: String, cause: String| SimError::Unstable {
         step: c.step,
         time_s: c.time_s,
@@ -111,7 +111,7 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
     };
     let (stable, which) = c.limits.min();
     if let Some(i) = c.extremes.non_finite {
-        let cause = match m.scene.time.dt {
+        let cause = match m.time.dt {
             Some(dt) if dt > stable => format!(
                 "the fixed step time.dt = {dt:e} s exceeds the {which} limit {stable:e} s of the state reached; lower time.dt or omit it"
             ),
@@ -166,7 +166,7 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
             ),
         ));
     }
-    if m.scene.time.dt.is_none() && c.first_dt_s > 0.0 && stable < h.min_dt_ratio * c.first_dt_s {
+    if m.time.dt.is_none() && c.first_dt_s > 0.0 && stable < h.min_dt_ratio * c.first_dt_s {
         let (a2, ia) = c.extremes.acc2;
         return Err(fail(
             ia,
@@ -180,7 +180,7 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
             "a particle is being thrown by a force far beyond the others (typically two particles almost on top of each other after an impact too fast for the sound speed); raise discretisation.sound_speed or lower the time-step factors".into(),
         ));
     }
-    if let Some(dt) = m.scene.time.dt {
+    if let Some(dt) = m.time.dt {
         // the limits carry safety factors (0.25 for CFL): twice the limit is past stability;
         // at step 0 the scene check (time.dt against the initial limits) speaks first
         if c.step > 0 && dt > 2.0 * stable {

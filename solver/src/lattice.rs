@@ -65,6 +65,23 @@ pub fn potential_surface_sum(potential: &Kondo2007Potential) -> f64 {
     s
 }
 
+/// `Σ_{j≠i} P(r_ij)` over the bulk lattice [m³].
+pub fn bulk_potential_sum(p: &Kondo2007Potential) -> f64 {
+    let n = (p.r_e_m / p.l0_m).ceil() as i64 + 1;
+    let mut s = 0.0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                if i == 0 && j == 0 && k == 0 {
+                    continue;
+                }
+                s += p.p(p.l0_m * ((i * i + j * j + k * k) as f64).sqrt());
+            }
+        }
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

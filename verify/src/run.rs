@@ -167,7 +167,7 @@ fn run_in_pool(
         })?;
         let info = RunInfo {
             scene_file: scene_file.display().to_string(),
-            scene: sim.model.scene.clone(),
+            scene: sim.scene.clone(),
             effects: sim.model.effects.names(),
             git_revision: env!("GIT_REVISION").to_string(),
             threads,
@@ -198,7 +198,7 @@ fn run_in_pool(
     info.threads = threads;
     write_info(out, &info)?;
 
-    let time = sim.model.scene.time.clone();
+    let time = sim.scene.time.clone();
     let n_outputs = (time.end / time.output_interval).round() as u64;
     let bar = progress_bar(opts.progress, n_outputs);
     bar.set_position(k);

@@ -209,7 +209,9 @@ mod tests {
         assert!(out.iter().all(|r| (r / 1000.0 - 1.0).abs() < 1e-13));
         // while the plain summation is 30 % short at a corner of the block
         let mut summ = vec![0.0; n];
-        let lattice = crate::lattice::kernel_sum(&k, 1e-4);
+        // the calibration: Σ W at the block's centre, a bulk site (4 l0 from every face)
+        let centre = Vec3::repeat(4e-4);
+        let lattice: f64 = pos.iter().map(|p| k.w((p - centre).norm())).sum();
         let mut active = vec![0; n];
         let support = k.support_m();
         summation(

@@ -6,28 +6,15 @@
 
 use super::common::{advance, block_scene, sim};
 use solver::kernel::WendlandC2;
-use solver::physics::forces::{dispatch, ForceInput};
 use solver::state::Vec3;
 use solver::Simulation;
 
 /// Accelerations [m/s²] of the current state with the masks `active`.
 fn accelerations(s: &Simulation, active: Vec<u64>) -> Vec<Vec3> {
-    let mut search = s.search.clone();
-    search.active = active;
-    let k = s.model.kernel_of::<WendlandC2>();
-    let inp = ForceInput::new(k, &s.model, &s.particles, &s.wall_no_slip, &search);
-    let e = &s.model.effects;
+    let mut s = s.clone();
+    s.search.active = active;
     let mut acc = vec![Vec3::zeros(); s.particles.n_fluid];
-    dispatch(
-        &inp,
-        e.laminar_viscosity,
-        e.artificial_viscosity.is_some(),
-        e.interfacial_tension,
-        e.walls,
-        false,
-        &mut acc,
-        &mut [],
-    );
+    s.pair_forces::<WendlandC2>(&mut acc, &mut []);
     acc
 }
 

@@ -45,9 +45,9 @@ boundary = "{boundary}"
 fn an_impacting_drop_never_enters_the_plate() {
     for (boundary, theta) in [("free_slip", 90.0), ("no_slip", 30.0), ("free_slip", 150.0)] {
         let mut s = sim(&impact(boundary, theta));
-        let layers = s.model.scene.wall_layers(&s.model.scene.walls[0]);
+        let layers = s.scene.wall_layers(&s.scene.walls[0]);
         let thickness = layers as f64 * s.model.l0_m;
-        let shape: WallShape = s.model.scene.walls[0].shape.clone();
+        let shape: WallShape = s.scene.walls[0].shape.clone();
         let mut min_z = f64::INFINITY;
         let rim = 1.5e-3;
         for _ in 0..1500 {

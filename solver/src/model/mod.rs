@@ -1,87 +1,23 @@
-//! The resolved model: a validated scene turned into the constants the time step needs.
+//! The resolved model: a validated scene turned into the constants the time step needs. The
+//! step, the health checks and the observables read only these; the scene itself is kept by
+//! the simulation for checkpoints and run records.
+
+mod effects;
+pub mod pairs;
+
+pub use effects::Effects;
 
 use crate::kernel::{Kernel, KernelKind};
 use crate::lattice;
 use crate::physics::eos::TaitEos;
 use crate::physics::surface_tension::{Kondo2007Potential, PairTable};
-use crate::scene::{
-    DensityScheme, NegativePressure, ParticleMass, Reinit, Scene, SceneError, WallBoundary,
-};
+use crate::scene::{Health, ParticleMass, Scene, SceneError, TimeControl};
 use crate::state::Vec3;
 use crate::with_kernel;
-use serde::Serialize;
-
-/// The effects built for a run. Anything not listed here is not computed at all.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Effects {
-    /// Gravity [m/s²], if any.
-    pub gravity: Option<[f64; 3]>,
-    /// Laminar viscosity.
-    pub laminar_viscosity: bool,
-    /// Artificial viscosity `(α1, α2)`, if any.
-    pub artificial_viscosity: Option<(f64, f64)>,
-    /// Pairwise-potential surface and interfacial tension.
-    pub interfacial_tension: bool,
-    /// Wall particles (pressure extrapolation; with tension also wetting).
-    pub walls: bool,
-    /// Some wall is no-slip.
-    pub no_slip_walls: bool,
-    /// Density scheme.
-    pub density: DensityScheme,
-    /// Density re-initialisation `(filter, every n steps)`, if any.
-    pub density_reinit: Option<(Reinit, u32)>,
-    /// Negative EOS pressure clipped to zero.
-    pub clip_negative_pressure: bool,
-}
-
-impl Effects {
-    /// Names of the built effects, for reports.
-    pub fn names(&self) -> Vec<String> {
-        let mut v = vec!["pressure (Tait EOS)".to_string()];
-        if let Some(g) = self.gravity {
-            v.push(format!("gravity {g:?} m/s²"));
-        }
-        if self.laminar_viscosity {
-            v.push("laminar viscosity".into());
-        }
-        if let Some((a1, a2)) = self.artificial_viscosity {
-            v.push(format!("artificial viscosity (α1 = {a1}, α2 = {a2})"));
-        }
-        if self.interfacial_tension {
-            v.push("interfacial tension (pairwise potential, Fowkes pairs)".into());
-        }
-        if self.walls {
-            let slip = if self.no_slip_walls {
-                "no-slip"
-            } else {
-                "free-slip"
-            };
-            let wet = if self.interfacial_tension {
-                " with wetting"
-            } else {
-                ""
-            };
-            v.push(format!("walls ({slip}){wet}"));
-        }
-        v.push(match self.density {
-            DensityScheme::Summation => "density: summation".into(),
-            DensityScheme::Continuity => "density: continuity".into(),
-        });
-        if self.clip_negative_pressure {
-            v.push("EOS: negative pressure clipped to zero".into());
-        }
-        if let Some((r, n)) = self.density_reinit {
-            v.push(format!("density re-initialisation: {r:?} every {n} steps"));
-        }
-        v
-    }
-}
 
 /// Constants of a run, derived once from the scene.
 #[derive(Clone, Debug)]
 pub struct Model {
-    /// The scene as resolved (defaults filled in).
-    pub scene: Scene,
     /// Kernel.
     pub kernel: KernelKind,
     /// Initial spacing `l0` [m].
@@ -123,6 +59,15 @@ pub struct Model {
     pub bulk_potential_sum_m3: f64,
     /// The effects built.
     pub effects: Effects,
+    /// End time, output interval, fixed step, step factors and step budget.
+    pub time: TimeControl,
+    /// The bounds of the health checks after every step.
+    pub health: Health,
+    /// Verlet skin of the neighbour lists [m].
+    pub neighbour_skin_m: f64,
+    /// The largest interaction radius [m]: `r_e` with interfacial tension if larger than the
+    /// kernel support, else the support.
+    pub interaction_radius_m: f64,
 }
 
 impl Model {
@@ -145,7 +90,7 @@ impl Model {
                 "the potential's lattice surface sum S is not positive for this cut-off",
             ));
         }
-        let bulk_potential_sum_m3 = bulk_sum(&potential);
+        let bulk_potential_sum_m3 = lattice::bulk_potential_sum(&potential);
         let n_liquids = scene.liquids.len();
         if n_liquids + scene.solids.len() > u8::MAX as usize {
             return Err(SceneError::invalid(
@@ -172,58 +117,24 @@ impl Model {
             .map(|l| l.density * rest_volume_m3)
             .collect();
         mass.extend(scene.solids.iter().map(|_| 0.0));
-        let n_phases = phase_names.len();
-        let mut mu_pair = vec![0.0; n_phases * n_phases];
-        for a in 0..n_phases {
-            for b in a..n_phases {
-                let v = match (a < n_liquids, b < n_liquids) {
-                    (true, true) if mu[a] + mu[b] > 0.0 => 2.0 * mu[a] * mu[b] / (mu[a] + mu[b]),
-                    (true, true) => 0.0,
-                    (true, false) => mu[a],
-                    (false, true) => mu[b],
-                    (false, false) => 0.0,
-                };
-                mu_pair[a * n_phases + b] = v;
-                mu_pair[b * n_phases + a] = v;
-            }
-        }
+        let mu_pair = pairs::viscosity_table(&mu, n_liquids);
         let pairs = if scene.effects.interfacial_tension {
-            PairTable::from_scene(scene, surface_sum_m3)
+            pairs::fowkes_table(scene, surface_sum_m3)
         } else {
-            let n = phase_names.len();
-            PairTable {
-                n_phases: n,
-                sigma_pair: vec![0.0; n * n],
-                coeff: vec![0.0; n * n],
-            }
+            PairTable::zero(phase_names.len())
         };
-        let e = &scene.effects;
-        let effects = Effects {
-            gravity: e.gravity,
-            laminar_viscosity: e.laminar_viscosity,
-            artificial_viscosity: e
-                .artificial_viscosity
-                .as_ref()
-                .map(|a| (a.alpha1, a.alpha2)),
-            interfacial_tension: e.interfacial_tension,
-            walls: !scene.walls.is_empty(),
-            no_slip_walls: scene
-                .walls
-                .iter()
-                .any(|w| w.boundary == WallBoundary::NoSlip),
-            density: scene.density.scheme,
-            density_reinit: match scene.density.reinit {
-                Reinit::None => None,
-                r => Some((r, scene.density.reinit_every)),
-            },
-            clip_negative_pressure: scene.density.negative_pressure == NegativePressure::Clip,
+        let effects = Effects::of(scene);
+        let support_m = scene.kernel_support();
+        let interaction_radius_m = if effects.interfacial_tension {
+            r_e
+        } else {
+            support_m
         };
         Ok(Model {
-            scene: scene.clone(),
             kernel: d.kernel,
             l0_m: l0,
             h_m: h,
-            support_m: scene.kernel_support(),
+            support_m,
             r_e_m: r_e,
             c_m_s: d.sound_speed,
             eos: TaitEos {
@@ -242,6 +153,10 @@ impl Model {
             surface_sum_m3,
             bulk_potential_sum_m3,
             effects,
+            time: scene.time.clone(),
+            health: scene.health.clone(),
+            neighbour_skin_m: d.neighbour_skin_over_l0 * l0,
+            interaction_radius_m,
         })
     }
 
@@ -260,7 +175,7 @@ impl Model {
 
     /// The time-step limits that do not depend on the state: viscous and capillary [s].
     pub fn static_step_limits(&self) -> (Option<f64>, Option<f64>) {
-        let f = &self.scene.time.factors;
+        let f = &self.time.factors;
         let h = self.h_m;
         let viscous = if self.effects.laminar_viscosity {
             (0..self.n_liquids)
@@ -286,21 +201,4 @@ impl Model {
         };
         (viscous, capillary)
     }
-}
-
-/// `Σ_{j≠i} P(r_ij)` over the bulk lattice [m³].
-fn bulk_sum(p: &Kondo2007Potential) -> f64 {
-    let n = (p.r_e_m / p.l0_m).ceil() as i64 + 1;
-    let mut s = 0.0;
-    for k in -n..=n {
-        for j in -n..=n {
-            for i in -n..=n {
-                if i == 0 && j == 0 && k == 0 {
-                    continue;
-                }
-                s += p.p(p.l0_m * ((i * i + j * j + k * k) as f64).sqrt());
-            }
-        }
-    }
-    s
 }

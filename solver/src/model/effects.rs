@@ -1,0 +1,100 @@
+//! The effects built for a run, resolved from the scene's `[effects]`, `[density]` and walls.
+
+use crate::scene::{DensityScheme, NegativePressure, Reinit, Scene, WallBoundary};
+use serde::Serialize;
+
+/// The effects built for a run. Anything not listed here is not computed at all.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Effects {
+    /// Gravity [m/s²], if any.
+    pub gravity: Option<[f64; 3]>,
+    /// Laminar viscosity.
+    pub laminar_viscosity: bool,
+    /// Artificial viscosity `(α1, α2)`, if any.
+    pub artificial_viscosity: Option<(f64, f64)>,
+    /// Pairwise-potential surface and interfacial tension.
+    pub interfacial_tension: bool,
+    /// Wall particles (pressure extrapolation; with tension also wetting).
+    pub walls: bool,
+    /// Some wall is no-slip.
+    pub no_slip_walls: bool,
+    /// Density scheme.
+    pub density: DensityScheme,
+    /// Density re-initialisation `(filter, every n steps)`, if any.
+    pub density_reinit: Option<(Reinit, u32)>,
+    /// Negative EOS pressure clipped to zero.
+    pub clip_negative_pressure: bool,
+}
+
+impl Effects {
+    /// The effects a (validated) scene declares.
+    pub fn of(scene: &Scene) -> Effects {
+        let e = &scene.effects;
+        Effects {
+            gravity: e.gravity,
+            laminar_viscosity: e.laminar_viscosity,
+            artificial_viscosity: e
+                .artificial_viscosity
+                .as_ref()
+                .map(|a| (a.alpha1, a.alpha2)),
+            interfacial_tension: e.interfacial_tension,
+            walls: !scene.walls.is_empty(),
+            no_slip_walls: scene
+                .walls
+                .iter()
+                .any(|w| w.boundary == WallBoundary::NoSlip),
+            density: scene.density.scheme,
+            density_reinit: match scene.density.reinit {
+                Reinit::None => None,
+                r => Some((r, scene.density.reinit_every)),
+            },
+            clip_negative_pressure: scene.density.negative_pressure == NegativePressure::Clip,
+        }
+    }
+
+    /// Whether the density follows the continuity equation (else the summation).
+    pub fn continuity(&self) -> bool {
+        self.density == DensityScheme::Continuity
+    }
+
+    /// Names of the built effects, for reports.
+    pub fn names(&self) -> Vec<String> {
+        let mut v = vec!["pressure (Tait EOS)".to_string()];
+        if let Some(g) = self.gravity {
+            v.push(format!("gravity {g:?} m/s²"));
+        }
+        if self.laminar_viscosity {
+            v.push("laminar viscosity".into());
+        }
+        if let Some((a1, a2)) = self.artificial_viscosity {
+            v.push(format!("artificial viscosity (α1 = {a1}, α2 = {a2})"));
+        }
+        if self.interfacial_tension {
+            v.push("interfacial tension (pairwise potential, Fowkes pairs)".into());
+        }
+        if self.walls {
+            let slip = if self.no_slip_walls {
+                "no-slip"
+            } else {
+                "free-slip"
+            };
+            let wet = if self.interfacial_tension {
+                " with wetting"
+            } else {
+                ""
+            };
+            v.push(format!("walls ({slip}){wet}"));
+        }
+        v.push(match self.density {
+            DensityScheme::Summation => "density: summation".into(),
+            DensityScheme::Continuity => "density: continuity".into(),
+        });
+        if self.clip_negative_pressure {
+            v.push("EOS: negative pressure clipped to zero".into());
+        }
+        if let Some((r, n)) = self.density_reinit {
+            v.push(format!("density re-initialisation: {r:?} every {n} steps"));
+        }
+        v
+    }
+}

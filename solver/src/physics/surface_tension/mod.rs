@@ -1,0 +1,15 @@
+//! Surface and interfacial tension by a pairwise interparticle potential.
+//!
+//! The potential is Kondo et al. (2007)'s, used in 3D SPH by Natsui et al. (2016, 2021): a pair
+//! force `C_ij P'(r_ij) e_ij`, repulsive below `l0`, attractive between `l0` and `r_e`
+//! ([`potential`]), in the force loop as the term [`force::PairwisePotential`]. Pair strengths
+//! follow the Fowkes hypothesis ([`fowkes`]): users give σ, σ_ab and contact angles, and the
+//! coefficients `C_ab` follow.
+
+pub mod force;
+pub mod fowkes;
+pub mod potential;
+
+pub use force::PairwisePotential;
+pub use fowkes::PairTable;
+pub use potential::Kondo2007Potential;

@@ -1,0 +1,100 @@
+//! The right-hand side at the current positions: density, EOS, wall values, then the pair
+//! forces (assembled in [`super::force_terms`]); and the periodic density re-initialisation.
+
+use super::Simulation;
+use crate::kernel::Kernel;
+use crate::physics::{density, walls};
+use crate::scene::{DensityScheme, Reinit};
+use crate::state::Vec3;
+use rayon::prelude::*;
+use std::time::Instant;
+
+impl Simulation {
+    /// Density, EOS, walls and forces at the current positions.
+    pub(super) fn evaluate<K: Kernel>(&mut self) {
+        let t0 = Instant::now();
+        let m = &self.model;
+        let k = K::new(m.h_m);
+        let search = &mut self.search;
+        let p = &mut self.particles;
+        let nf = p.n_fluid;
+        if m.effects.density == DensityScheme::Summation {
+            // the pairs that interact: within the search's far radius — the support, or r_e
+            // with the potential if larger
+            let active_radius = search.far_radius_m;
+            density::summation(
+                &k,
+                &p.pos,
+                &p.phase,
+                &m.rho0,
+                &search.lists,
+                m.lattice_kernel_sum,
+                active_radius,
+                &mut p.rho[..nf],
+                &mut search.active,
+            );
+        }
+        let lists = &self.search.lists;
+        let eos = m.eos;
+        let clip = m.effects.clip_negative_pressure;
+        p.pressure[..nf]
+            .par_iter_mut()
+            .zip(p.vol[..nf].par_iter_mut())
+            .zip(p.rho[..nf].par_iter().zip(p.phase[..nf].par_iter()))
+            .for_each(|((pr, v), (&r, &ph))| {
+                let p = eos.pressure(r, m.rho0[ph as usize]);
+                // physics.md §2: tension from a deficient density would act as an extra,
+                // uncontrolled surface tension; the potential alone carries cohesion
+                *pr = if clip { p.max(0.0) } else { p };
+                *v = m.mass[ph as usize] / r;
+            });
+        if m.effects.walls {
+            walls::update(
+                &k,
+                &eos,
+                p,
+                lists,
+                &m.rho0,
+                m.rest_volume_m3,
+                m.effects.gravity.map(Vec3::from),
+                &self.wall_no_slip,
+            );
+        }
+        let t1 = Instant::now();
+        self.timings.density_s += (t1 - t0).as_secs_f64();
+
+        // the accelerations and rates are written while the rest of the state is read
+        let mut acc = std::mem::take(&mut self.particles.acc);
+        let mut drho = std::mem::take(&mut self.drho_next);
+        self.pair_forces::<K>(&mut acc, &mut drho);
+        self.particles.acc = acc;
+        self.drho_next = drho;
+        self.timings.forces_s += t1.elapsed().as_secs_f64();
+    }
+
+    /// Replaces the densities by a Shepard or MLS filter every `n` steps, if declared.
+    pub(super) fn reinitialise_density<K: Kernel>(&mut self) {
+        let Some((method, every)) = self.model.effects.density_reinit else {
+            return;
+        };
+        if self.step % every as u64 != 0 {
+            return;
+        }
+        let t0 = Instant::now();
+        let m = &self.model;
+        let k = K::new(m.h_m);
+        let p = &self.particles;
+        let lists = &self.search.lists;
+        let new = match method {
+            Reinit::Shepard => {
+                density::shepard(&k, &p.pos, &p.phase, &m.mass, &p.rho, lists, p.n_fluid)
+            }
+            Reinit::Mls => density::mls(
+                &k, &p.pos, &p.phase, &m.mass, &p.rho, lists, p.n_fluid, m.l0_m,
+            ),
+            Reinit::None => return,
+        };
+        self.particles.rho[..new.len()].copy_from_slice(&new);
+        self.timings.density_s += t0.elapsed().as_secs_f64();
+    }
+}

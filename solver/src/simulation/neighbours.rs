@@ -1,0 +1,54 @@
+//! Keeping the particle order and the neighbour lists: walls sorted once by cell, fluid
+//! particles re-sorted at every list rebuild.
+
+use super::Simulation;
+use crate::error::SimError;
+use std::time::Instant;
+
+impl Simulation {
+    /// Sorts the wall particles by cell (once: walls never move).
+    pub(super) fn sort_walls(&mut self) -> Result<(), SimError> {
+        let nf = self.particles.n_fluid;
+        let perm = self
+            .search
+            .sort_order(&self.particles.pos[nf..])
+            .map_err(|source| SimError::Escaped { step: 0, source })?;
+        fn gather<T: Copy>(v: &mut [T], perm: &[u32]) {
+            let old = v.to_vec();
+            for (k, &p) in perm.iter().enumerate() {
+                v[k] = old[p as usize];
+            }
+        }
+        let p = &mut self.particles;
+        gather(&mut p.pos[nf..], &perm);
+        gather(&mut p.vel[nf..], &perm);
+        gather(&mut p.rho[nf..], &perm);
+        gather(&mut p.pressure[nf..], &perm);
+        gather(&mut p.vol[nf..], &perm);
+        gather(&mut p.phase[nf..], &perm);
+        gather(&mut p.id[nf..], &perm);
+        gather(&mut self.wall_no_slip, &perm);
+        Ok(())
+    }
+
+    /// Re-sorts the fluid particles by cell and rebuilds the neighbour lists (the step does
+    /// this when a particle has moved half the skin; public for benchmarks of the search).
+    pub fn rebuild_neighbours(&mut self) -> Result<(), SimError> {
+        let t0 = Instant::now();
+        let nf = self.particles.n_fluid;
+        let step = self.step;
+        let perm = self
+            .search
+            .sort_order(&self.particles.pos[..nf])
+            .map_err(|source| SimError::Escaped { step, source })?;
+        self.particles.permute_fluid(&perm);
+        self.particles
+            .x_ref
+            .copy_from_slice(&self.particles.pos[..nf]);
+        self.search
+            .build(&self.particles.pos, nf)
+            .map_err(|source| SimError::Escaped { step, source })?;
+        self.timings.search_s += t0.elapsed().as_secs_f64();
+        Ok(())
+    }
+}

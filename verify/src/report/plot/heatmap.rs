@@ -67,6 +67,7 @@ type Cell = ((f64, f64), (f64, f64), Option<f64>);
 /// An overlay point `(x, y, label)`.
 type Overlay = (f64, f64, String);
 
+/// Draws the map, its colour bar and legend row on `root` (either backend).
 fn render_heatmap<DB: DrawingBackend>(
     m: &Heatmap,
     root: &DrawingArea<DB, Shift>,

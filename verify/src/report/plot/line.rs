@@ -78,6 +78,7 @@ pub fn draw(plot: &Plot, stem: &Path) -> anyhow::Result<()> {
     )
 }
 
+/// Draws the plot on `root` (either backend).
 fn render_plot<DB: DrawingBackend>(p: &Plot, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
     let area = page(root, &p.title)?;
 

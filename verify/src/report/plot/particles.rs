@@ -13,7 +13,7 @@ use super::clip::Bounds;
 use super::frame::{chart_builder, draw_mesh, draw_no_data, y_label_area, Chart, MARGIN};
 use super::legend::{draw_series_legend, Swatch};
 use super::output::{write_both, DrawResult};
-use super::range::auto_range;
+use super::range::{auto_range, is_finite_point};
 use super::style::{palette, rect_fill, REF_GREY};
 use super::text::page;
 
@@ -66,6 +66,7 @@ fn equal_aspect(
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
 }
 
+/// Draws the view on `root` (either backend).
 fn render_particles<DB: DrawingBackend>(
     v: &ParticleView,
     root: &DrawingArea<DB, Shift>,
@@ -76,7 +77,7 @@ fn render_particles<DB: DrawingBackend>(
         .points
         .iter()
         .copied()
-        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .filter(|p| is_finite_point(&(p.0, p.1)))
         .collect();
     let rects: Vec<&LabelledRect> = v
         .rects
@@ -87,16 +88,7 @@ fn render_particles<DB: DrawingBackend>(
                 .all(|c| c.is_finite())
         })
         .collect();
-    let xs = points
-        .iter()
-        .map(|p| p.0)
-        .chain(rects.iter().flat_map(|r| [r.0 .0, r.1 .0]));
-    let ys = points
-        .iter()
-        .map(|p| p.1)
-        .chain(rects.iter().flat_map(|r| [r.0 .1, r.1 .1]));
-    let x_range = auto_range(xs).unwrap_or((0.0, 1.0));
-    let y_range = auto_range(ys).unwrap_or((0.0, 1.0));
+    let (x_range, y_range) = data_ranges(&points, &rects);
 
     // The label area is sized from the unexpanded range; equal scales only add room.
     let provisional = Axis::new(y_range, 7);
@@ -113,29 +105,10 @@ fn render_particles<DB: DrawingBackend>(
     draw_mesh(&mut chart, &xa, &ya, &v.x_label, &v.y_label)?;
     let bounds = Bounds::of(&xa, &ya);
 
-    for r in &rects {
-        let ((x0, y0), (x1, y1), _) = **r;
-        chart.draw_series(std::iter::once(Rectangle::new(
-            [(x0, y0), (x1, y1)],
-            rect_fill(),
-        )))?;
-        chart.draw_series(std::iter::once(Rectangle::new(
-            [(x0, y0), (x1, y1)],
-            REF_GREY.stroke_width(1),
-        )))?;
-    }
+    // Rectangles under the particles, their legend entries after the categories'.
+    let rect_entries = draw_rects(&mut chart, &rects)?;
     let mut entries = draw_points(&mut chart, &bounds, v, &points)?;
-    let mut rect_labels: Vec<&str> = Vec::new();
-    for r in &rects {
-        if !r.2.is_empty() && !rect_labels.contains(&r.2.as_str()) {
-            rect_labels.push(r.2.as_str());
-        }
-    }
-    entries.extend(
-        rect_labels
-            .into_iter()
-            .map(|l| (Swatch::Box, l.to_string())),
-    );
+    entries.extend(rect_entries);
 
     if entries.len() > 1 {
         add_legend_entries(&mut chart, entries)?;
@@ -146,6 +119,51 @@ fn render_particles<DB: DrawingBackend>(
         draw_no_data(&chart, &xa, &ya)?;
     }
     Ok(())
+}
+
+/// The x and y ranges of the particles and rectangles with a 5 % margin, `(0, 1)` without.
+fn data_ranges(points: &[(f64, f64, usize)], rects: &[&LabelledRect]) -> ((f64, f64), (f64, f64)) {
+    let xs = points
+        .iter()
+        .map(|p| p.0)
+        .chain(rects.iter().flat_map(|r| [r.0 .0, r.1 .0]));
+    let ys = points
+        .iter()
+        .map(|p| p.1)
+        .chain(rects.iter().flat_map(|r| [r.0 .1, r.1 .1]));
+    (
+        auto_range(xs).unwrap_or((0.0, 1.0)),
+        auto_range(ys).unwrap_or((0.0, 1.0)),
+    )
+}
+
+/// Draws the rectangles in translucent grey with a dark grey outline and returns one legend
+/// entry per distinct non-empty label.
+fn draw_rects<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    rects: &[&LabelledRect],
+) -> Result<Vec<(Swatch, String)>, DrawingAreaErrorKind<DB::ErrorType>> {
+    for r in rects {
+        let ((x0, y0), (x1, y1), _) = **r;
+        chart.draw_series(std::iter::once(Rectangle::new(
+            [(x0, y0), (x1, y1)],
+            rect_fill(),
+        )))?;
+        chart.draw_series(std::iter::once(Rectangle::new(
+            [(x0, y0), (x1, y1)],
+            REF_GREY.stroke_width(1),
+        )))?;
+    }
+    let mut labels: Vec<&str> = Vec::new();
+    for r in rects {
+        if !r.2.is_empty() && !labels.contains(&r.2.as_str()) {
+            labels.push(r.2.as_str());
+        }
+    }
+    Ok(labels
+        .into_iter()
+        .map(|l| (Swatch::Box, l.to_string()))
+        .collect())
 }
 
 /// Draws the particles inside `bounds` category by category (every named category and every

@@ -17,9 +17,11 @@ fn tune_allocator() {
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
-use verify::run::{load_scene, run_scene, RunOptions};
+use verify::cases;
+use verify::report::summary;
+use verify::run::{self, load_scene, run_scene, RunOptions};
 use verify::suite::runner::{self, SuiteOptions};
-use verify::suite::{all_cases, Fidelity};
+use verify::suite::Fidelity;
 
 #[derive(Parser)]
 #[command(
@@ -178,12 +180,10 @@ fn main() {
                 progress: true,
                 checkpoint_steps,
                 checkpoint_minutes: Some(checkpoint_minutes),
-                resume: resume.is_some(),
                 interrupt: Some(interrupt),
             };
             let result = match (&resume, &scene) {
-                (Some(dir), _) => verify::output::checkpoint::scene_of(dir)
-                    .and_then(|(s, file)| run_scene(&s, &file, &opts)),
+                (Some(_), _) => run::resume(&opts),
                 (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
                 (None, None) => unreachable!("clap requires a scene or --resume"),
             };
@@ -205,7 +205,7 @@ fn main() {
             }
         }
         Command::List { fidelity } => {
-            for case in all_cases() {
+            for case in cases::all() {
                 println!("{:<24} {}", case.name(), case.title());
                 println!("{:<24} source: {}", "", case.source());
                 println!(
@@ -244,7 +244,7 @@ fn run_suite(
     names: Option<&[String]>,
     baseline: Option<&Path>,
 ) -> anyhow::Result<i32> {
-    let cases = all_cases();
+    let cases = cases::all();
     if let Some(names) = names {
         for n in names {
             if !cases.iter().any(|c| c.name() == n) {
@@ -267,7 +267,7 @@ fn run_suite(
             case.name()
         );
     }
-    let regressions = runner::write_summaries(&opts.out, opts.fidelity, baseline)?;
+    let regressions = summary::write_all(&opts.out, opts.fidelity, &cases, baseline)?;
     eprintln!("summary: {}", opts.out.join("summary.md").display());
     if let Some(r) = regressions {
         if !r.is_empty() {
@@ -284,12 +284,13 @@ fn run_suite(
 
 fn report(out: &Path) -> anyhow::Result<i32> {
     let record = runner::read_record(out)?;
-    for case in all_cases() {
+    let cases = cases::all();
+    for case in &cases {
         if out.join(case.name()).exists() {
             runner::analyse_case(case.as_ref(), record.fidelity, out)?;
         }
     }
-    runner::write_summaries(out, record.fidelity, None)?;
+    summary::write_all(out, record.fidelity, &cases, None)?;
     eprintln!("summary: {}", out.join("summary.md").display());
     Ok(0)
 }

@@ -127,7 +127,10 @@ fn strip(text: &str) -> String {
     while i < b.len() {
         let rest = &b[i..];
         if rest.starts_with(b"//") {
-            let end = rest.iter().position(|&c| c == b'\n').map_or(b.len(), |k| i + k);
+            let end = rest
+                .iter()
+                .position(|&c| c == b'\n')
+                .map_or(b.len(), |k| i + k);
             blank(&mut out, i, end);
             i = end;
         } else if rest.starts_with(b"/*") {
@@ -219,8 +222,8 @@ fn group_heads(code: &str, open: usize) -> Vec<(String, usize)> {
     let b = code.as_bytes();
     let mut out = Vec::new();
     let (mut depth, mut expect_head) = (0usize, true);
-    for i in open..b.len() {
-        match b[i] {
+    for (i, &c) in b.iter().enumerate().skip(open) {
+        match c {
             b'{' => {
                 depth += 1;
                 expect_head = depth == 1;
@@ -232,7 +235,7 @@ fn group_heads(code: &str, open: usize) -> Vec<(String, usize)> {
                 }
             }
             b',' => expect_head = depth == 1,
-            c if expect_head && (c.is_ascii_alphabetic() || c == b'_') => {
+            _ if expect_head && (c.is_ascii_alphabetic() || c == b'_') => {
                 expect_head = false;
                 if let Some(name) = ident_at(code, i) {
                     if name != "self" {

@@ -1,58 +1,33 @@
-//! `summary.csv` (machine-readable, also the regression baseline format) and `summary.md` (what
-//! a reviewer reads first).
+//! The suite's summaries: `summary.md` (what a reviewer reads first) and `summary.csv`
+//! (machine-readable, also the regression baseline format), from every case measured so far.
 
-use crate::suite::{Case, Fidelity, Metric};
+use crate::suite::compare::{self, summary_csv, Regression};
+use crate::suite::{runner, Case, Fidelity, Metric};
 use std::fmt::Write as _;
 use std::path::Path;
 
-const COLUMNS: [&str; 13] = [
-    "case",
-    "name",
-    "unit",
-    "value",
-    "reference",
-    "paper",
-    "error",
-    "tolerance",
-    "tolerance_source",
-    "pass",
-    "particles",
-    "wall_time_s",
-    "note",
-];
-
-fn opt(v: Option<f64>) -> String {
-    v.map(|x| format!("{x:e}")).unwrap_or_default()
-}
-
-/// Writes metrics as CSV.
-pub fn write_csv(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(COLUMNS)?;
-    for m in metrics {
-        w.write_record([
-            m.case.clone(),
-            m.name.clone(),
-            m.unit.clone(),
-            format!("{:e}", m.value),
-            opt(m.reference),
-            opt(m.paper),
-            opt(m.error()),
-            opt(m.tolerance.as_ref().map(|t| t.abs)),
-            m.tolerance
-                .as_ref()
-                .map(|t| t.source.clone())
-                .unwrap_or_default(),
-            m.pass()
-                .map(|p| if p { "pass" } else { "FAIL" }.to_string())
-                .unwrap_or_default(),
-            m.particles.to_string(),
-            format!("{:.1}", m.wall_time_s),
-            m.note.clone(),
-        ])?;
-    }
-    crate::output::atomic_write(path, &w.into_inner()?)?;
-    Ok(())
+/// Rewrites `OUT/summary.md` and `OUT/summary.csv` from every one of `cases` measured so far
+/// under `out`; with a baseline, also compares and returns the regressions.
+pub fn write_all(
+    out: &Path,
+    fidelity: Fidelity,
+    cases: &[Box<dyn Case>],
+    baseline: Option<&Path>,
+) -> anyhow::Result<Option<Vec<Regression>>> {
+    let metrics = runner::saved_metrics(out, cases)?;
+    let regressions = match baseline {
+        Some(b) => Some(compare::compare(&metrics, b)?),
+        None => None,
+    };
+    summary_csv::write(&out.join("summary.csv"), &metrics)?;
+    write_markdown(
+        &out.join("summary.md"),
+        fidelity,
+        cases,
+        &metrics,
+        regressions.as_deref(),
+    )?;
+    Ok(regressions)
 }
 
 /// A number with 4 significant digits (or a dash).
@@ -81,12 +56,12 @@ fn sig_opt(v: Option<f64>) -> String {
 }
 
 /// Writes `summary.md`: per case its source, effects, resolution and a table of metrics.
-pub fn write_markdown(
+fn write_markdown(
     path: &Path,
     fidelity: Fidelity,
-    cases: &[&dyn Case],
+    cases: &[Box<dyn Case>],
     metrics: &[Metric],
-    regressions: Option<&[crate::suite::compare::Regression]>,
+    regressions: Option<&[Regression]>,
 ) -> anyhow::Result<()> {
     let mut s = String::new();
     let judged: Vec<&Metric> = metrics.iter().filter(|m| m.pass().is_some()).collect();

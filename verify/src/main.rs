@@ -1,6 +1,14 @@
 //! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in the README.
 
 use clap::{Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use verify::cases;
+use verify::report::summary;
+use verify::run::{self, load_scene, run_scene, RunOptions};
+use verify::suite::runner::{self, SuiteOptions};
+use verify::suite::Fidelity;
 
 /// glibc's allocator raises its mmap threshold each time a large block is freed, after which
 /// the large transient buffers of every neighbour rebuild (sort keys, permutation copies) come
@@ -14,14 +22,6 @@ fn tune_allocator() {
         libc::mallopt(libc::M_TRIM_THRESHOLD, 1024 * 1024);
     }
 }
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
-use verify::cases;
-use verify::report::summary;
-use verify::run::{self, load_scene, run_scene, RunOptions};
-use verify::suite::runner::{self, SuiteOptions};
-use verify::suite::Fidelity;
 
 #[derive(Parser)]
 #[command(
@@ -66,35 +66,79 @@ impl SuiteArgs {
     }
 }
 
+#[derive(clap::Args)]
+struct RunArgs {
+    /// The scene (TOML).
+    #[arg(required_unless_present = "resume")]
+    scene: Option<PathBuf>,
+    /// Output folder.
+    #[arg(long, required_unless_present = "resume", conflicts_with = "resume")]
+    out: Option<PathBuf>,
+    /// Continue the run in this folder from its checkpoint (bitwise as if never stopped).
+    #[arg(long, value_name = "DIR")]
+    resume: Option<PathBuf>,
+    /// Write a checkpoint every N steps.
+    #[arg(long, value_name = "N")]
+    checkpoint_steps: Option<u64>,
+    /// Write a checkpoint every M minutes of wall time.
+    #[arg(long, value_name = "M", default_value = "10")]
+    checkpoint_minutes: f64,
+    /// Write a particle snapshot (.vtu) every N outputs.
+    #[arg(long, value_name = "N")]
+    vtk: Option<u32>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_name = "N")]
+    threads: Option<usize>,
+    /// Overwrite a non-empty output folder.
+    #[arg(long)]
+    force: bool,
+}
+
+impl RunArgs {
+    /// Runs (or resumes) the scene; the exit code. Ctrl-C finishes the current step, writes a
+    /// checkpoint, flushes and exits with 130.
+    fn run(self) -> i32 {
+        let interrupt = Arc::new(AtomicBool::new(false));
+        let flag = interrupt.clone();
+        let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
+        let opts = RunOptions {
+            out_dir: self.resume.clone().or(self.out).unwrap_or_default(),
+            vtk_every: self.vtk,
+            threads: self.threads,
+            force: self.force,
+            progress: true,
+            checkpoint_steps: self.checkpoint_steps,
+            checkpoint_minutes: Some(self.checkpoint_minutes),
+            interrupt: Some(interrupt),
+        };
+        let result = match (&self.resume, &self.scene) {
+            (Some(_), _) => run::resume(&opts),
+            (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
+            (None, None) => unreachable!("clap requires a scene or --resume"),
+        };
+        match result {
+            Ok(info) => {
+                eprintln!(
+                    "done: {} steps, {:.3e} s simulated, {:.1} s wall, {:.3e} particle-steps/s",
+                    info.steps,
+                    info.simulated_time_s,
+                    info.wall_time_s,
+                    info.particle_steps_per_second
+                );
+                0
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                e.exit_code()
+            }
+        }
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene file (or continue a stopped run with --resume DIR).
-    Run {
-        /// The scene (TOML).
-        #[arg(required_unless_present = "resume")]
-        scene: Option<PathBuf>,
-        /// Output folder.
-        #[arg(long, required_unless_present = "resume", conflicts_with = "resume")]
-        out: Option<PathBuf>,
-        /// Continue the run in this folder from its checkpoint (bitwise as if never stopped).
-        #[arg(long, value_name = "DIR")]
-        resume: Option<PathBuf>,
-        /// Write a checkpoint every N steps.
-        #[arg(long, value_name = "N")]
-        checkpoint_steps: Option<u64>,
-        /// Write a checkpoint every M minutes of wall time.
-        #[arg(long, value_name = "M", default_value = "10")]
-        checkpoint_minutes: f64,
-        /// Write a particle snapshot (.vtu) every N outputs.
-        #[arg(long, value_name = "N")]
-        vtk: Option<u32>,
-        /// Worker threads (default: all cores).
-        #[arg(long, value_name = "N")]
-        threads: Option<usize>,
-        /// Overwrite a non-empty output folder.
-        #[arg(long)]
-        force: bool,
-    },
+    Run(RunArgs),
     /// List the verification cases.
     List {
         /// Show the runs at this fidelity.
@@ -158,67 +202,8 @@ fn main() {
     tune_allocator();
     let cli = Cli::parse();
     let code = match cli.command {
-        Command::Run {
-            scene,
-            out,
-            resume,
-            checkpoint_steps,
-            checkpoint_minutes,
-            vtk,
-            threads,
-            force,
-        } => {
-            // Ctrl-C: finish the current step, write a checkpoint, flush, exit 130
-            let interrupt = Arc::new(AtomicBool::new(false));
-            let flag = interrupt.clone();
-            let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
-            let opts = RunOptions {
-                out_dir: resume.clone().or(out).unwrap_or_default(),
-                vtk_every: vtk,
-                threads,
-                force,
-                progress: true,
-                checkpoint_steps,
-                checkpoint_minutes: Some(checkpoint_minutes),
-                interrupt: Some(interrupt),
-            };
-            let result = match (&resume, &scene) {
-                (Some(_), _) => run::resume(&opts),
-                (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
-                (None, None) => unreachable!("clap requires a scene or --resume"),
-            };
-            match result {
-                Ok(info) => {
-                    eprintln!(
-                        "done: {} steps, {:.3e} s simulated, {:.1} s wall, {:.3e} particle-steps/s",
-                        info.steps,
-                        info.simulated_time_s,
-                        info.wall_time_s,
-                        info.particle_steps_per_second
-                    );
-                    0
-                }
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    e.exit_code()
-                }
-            }
-        }
-        Command::List { fidelity } => {
-            for case in cases::all() {
-                println!("{:<24} {}", case.name(), case.title());
-                println!("{:<24} source: {}", "", case.source());
-                println!(
-                    "{:<24} effects: {}",
-                    "",
-                    verify::suite::DeclaredEffects::describe_declared(case.effects())
-                );
-                let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
-                println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
-                println!("{:<24} resolution: {}", "", case.resolution(fidelity));
-            }
-            0
-        }
+        Command::Run(args) => args.run(),
+        Command::List { fidelity } => list(fidelity),
         Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
         Command::All { suite, compare } => {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
@@ -236,6 +221,23 @@ fn main() {
         } => exit_of(accuracy_cost(grid, &out, force, threads, max_particles)),
     };
     std::process::exit(code);
+}
+
+/// Prints every case: title, source, effects, and its runs and resolution at `fidelity`.
+fn list(fidelity: Fidelity) -> i32 {
+    for case in cases::all() {
+        println!("{:<24} {}", case.name(), case.title());
+        println!("{:<24} source: {}", "", case.source());
+        println!(
+            "{:<24} effects: {}",
+            "",
+            verify::suite::DeclaredEffects::describe_declared(case.effects())
+        );
+        let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
+        println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
+        println!("{:<24} resolution: {}", "", case.resolution(fidelity));
+    }
+    0
 }
 
 /// Runs the named cases (or all) and writes the summaries; the exit code.

@@ -55,7 +55,8 @@ fn sig_opt(v: Option<f64>) -> String {
     v.map(sig).unwrap_or_else(|| "—".into())
 }
 
-/// Writes `summary.md`: per case its source, effects, resolution and a table of metrics.
+/// Writes `summary.md`: the tally and regressions, then per case its source, effects,
+/// resolution, a table of metrics, their notes and links to its plots.
 fn write_markdown(
     path: &Path,
     fidelity: Fidelity,
@@ -64,6 +65,23 @@ fn write_markdown(
     regressions: Option<&[Regression]>,
 ) -> anyhow::Result<()> {
     let mut s = String::new();
+    header(&mut s, fidelity, metrics, regressions);
+    let out = path.parent().unwrap_or(Path::new("."));
+    for case in cases {
+        let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
+        case_section(&mut s, case.as_ref(), fidelity, &ms, out);
+    }
+    crate::output::atomic_write(path, s.as_bytes())?;
+    Ok(())
+}
+
+/// The title, how many metrics pass, and the regressions against a baseline if checked.
+fn header(
+    s: &mut String,
+    fidelity: Fidelity,
+    metrics: &[Metric],
+    regressions: Option<&[Regression]>,
+) {
     let judged: Vec<&Metric> = metrics.iter().filter(|m| m.pass().is_some()).collect();
     let passed = judged.iter().filter(|m| m.pass() == Some(true)).count();
     let _ = writeln!(s, "# Verification summary\n");
@@ -92,72 +110,76 @@ fn write_markdown(
             s.push('\n');
         }
     }
-    for case in cases {
-        let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
-        let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
-        let _ = writeln!(s, "Source: {}.  ", case.source());
+}
+
+/// The section of one case, with its metrics `ms` and the plots in `out/CASE`.
+fn case_section(s: &mut String, case: &dyn Case, fidelity: Fidelity, ms: &[&Metric], out: &Path) {
+    let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
+    let _ = writeln!(s, "Source: {}.  ", case.source());
+    let _ = writeln!(
+        s,
+        "Effects: {}.  ",
+        crate::suite::DeclaredEffects::describe_declared(case.effects())
+    );
+    let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
+    if ms.is_empty() {
+        let _ = writeln!(s, "_No results: the case was not run._\n");
+        return;
+    }
+    metric_table(s, ms);
+    let notes: Vec<String> = ms
+        .iter()
+        .filter(|m| !m.note.is_empty() || m.tolerance.is_some())
+        .map(|m| {
+            let tol = m
+                .tolerance
+                .as_ref()
+                .map(|t| format!(" Tolerance: {}.", t.source))
+                .unwrap_or_default();
+            format!("- *{}*: {}{}", m.name, m.note, tol)
+        })
+        .collect();
+    if !notes.is_empty() {
+        let _ = writeln!(s, "\nNotes:\n");
+        for n in notes {
+            let _ = writeln!(s, "{n}");
+        }
+    }
+    let plots = plots_of(out, case.name());
+    if !plots.is_empty() {
+        let _ = writeln!(s, "\nPlots: {}", plots.join(", "));
+    }
+    s.push('\n');
+}
+
+/// One row per metric: reference, paper, value, error, tolerance, verdict and cost.
+fn metric_table(s: &mut String, ms: &[&Metric]) {
+    let _ = writeln!(s, "| metric | unit | reference | paper | this project | error | tolerance | pass | particles | wall time [s] |");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    for m in ms {
+        let pass = match m.pass() {
+            Some(true) => "pass",
+            Some(false) => "**FAIL**",
+            None => "—",
+        };
         let _ = writeln!(
             s,
-            "Effects: {}.  ",
-            crate::suite::DeclaredEffects::describe_declared(case.effects())
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
+            m.name,
+            m.unit,
+            sig_opt(m.reference),
+            sig_opt(m.paper),
+            sig(m.value),
+            sig_opt(m.error()),
+            m.tolerance
+                .as_ref()
+                .map(|t| format!("±{}", sig(t.abs)))
+                .unwrap_or_else(|| "—".into()),
+            pass,
+            m.particles,
+            m.wall_time_s
         );
-        let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
-        if ms.is_empty() {
-            let _ = writeln!(s, "_No results: the case was not run._\n");
-            continue;
-        }
-        let _ = writeln!(s, "| metric | unit | reference | paper | this project | error | tolerance | pass | particles | wall time [s] |");
-        let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
-        for m in &ms {
-            let pass = match m.pass() {
-                Some(true) => "pass",
-                Some(false) => "**FAIL**",
-                None => "—",
-            };
-            let _ = writeln!(
-                s,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
-                m.name,
-                m.unit,
-                sig_opt(m.reference),
-                sig_opt(m.paper),
-                sig(m.value),
-                sig_opt(m.error()),
-                m.tolerance
-                    .as_ref()
-                    .map(|t| format!("±{}", sig(t.abs)))
-                    .unwrap_or_else(|| "—".into()),
-                pass,
-                m.particles,
-                m.wall_time_s
-            );
-        }
-        let notes: Vec<String> = ms
-            .iter()
-            .filter(|m| !m.note.is_empty() || m.tolerance.is_some())
-            .map(|m| {
-                let tol = m
-                    .tolerance
-                    .as_ref()
-                    .map(|t| format!(" Tolerance: {}.", t.source))
-                    .unwrap_or_default();
-                format!("- *{}*: {}{}", m.name, m.note, tol)
-            })
-            .collect();
-        if !notes.is_empty() {
-            let _ = writeln!(s, "\nNotes:\n");
-            for n in notes {
-                let _ = writeln!(s, "{n}");
-            }
-        }
-        let plots = plots_of(path.parent().unwrap_or(Path::new(".")), case.name());
-        if !plots.is_empty() {
-            let _ = writeln!(s, "\nPlots: {}", plots.join(", "));
-        }
-        s.push('\n');
     }
-    crate::output::atomic_write(path, s.as_bytes())?;
-    Ok(())
 }
 
 /// Links to the case's PNG plots, relative to the summary.

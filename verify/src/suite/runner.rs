@@ -2,17 +2,15 @@
 //! case summaries.
 
 mod probes;
+mod saved;
 mod snapshots;
 
 use super::compare::summary_csv;
-use super::dump::Dump;
-use super::{Case, Fidelity, Metric, RunData, RunSpec};
-use crate::output::run_info::{RunInfo, Status};
-use crate::output::timeseries::Table;
+use super::{Case, Fidelity, Metric};
+use crate::output::run_info::RunInfo;
 use crate::run::{run_scene_observed, Observer, RunError, RunOptions};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
-use snapshots::{snapshot_name, Snapshots};
 use std::path::{Path, PathBuf};
 
 /// Options of a suite run.
@@ -37,71 +35,6 @@ pub struct SuiteRecord {
     pub fidelity: Fidelity,
 }
 
-/// Whether `dir` holds a finished run of exactly `spec`'s scene.
-fn reusable(dir: &Path, spec: &RunSpec) -> bool {
-    RunInfo::read(dir).is_ok_and(|info| {
-        matches!(info.status, Status::Completed | Status::Failed)
-            && info.scene == spec.scene
-            && dir.join(snapshots::FINAL).exists()
-    })
-}
-
-/// The wall particles of a scene as a dump (empty if it has none).
-fn wall_dump(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
-    if scene.walls.is_empty() {
-        return Ok(None);
-    }
-    let model = solver::Model::from_scene(scene)?;
-    let (p, _, _) = solver::setup::build_particles(scene, &model)?;
-    let n = p.n_wall();
-    Ok(Some(Dump {
-        time_s: 0.0,
-        pos: p.pos[p.n_fluid..].iter().map(|x| [x.x, x.y, x.z]).collect(),
-        vel: vec![[0.0; 3]; n],
-        phase: p.phase[p.n_fluid..].to_vec(),
-        wall: vec![true; n],
-    }))
-}
-
-/// Reads a run's folder.
-pub fn load_run(dir: &Path, spec: &RunSpec) -> anyhow::Result<RunData> {
-    let info = RunInfo::read(dir)?;
-    let timeseries = Table::read(&dir.join("timeseries.csv"))?;
-    let probes = if dir.join("probes.csv").exists() {
-        Table::read(&dir.join("probes.csv"))?
-    } else {
-        Table::default()
-    };
-    // walls never move: rebuilt from the scene rather than stored
-    let walls = wall_dump(&info.scene)?;
-    let with_walls = |mut d: Dump| {
-        if let Some(w) = &walls {
-            d.pos.extend_from_slice(&w.pos);
-            d.vel.extend_from_slice(&w.vel);
-            d.phase.extend_from_slice(&w.phase);
-            d.wall.extend_from_slice(&w.wall);
-        }
-        d
-    };
-    let last = with_walls(Dump::read(&dir.join(snapshots::FINAL))?);
-    let mut snapshots = Vec::new();
-    for &t in &spec.snapshot_times_s {
-        let p = dir.join(snapshot_name(t));
-        if p.exists() {
-            snapshots.push((t, with_walls(Dump::read(&p)?)));
-        }
-    }
-    Ok(RunData {
-        id: spec.id.clone(),
-        dir: dir.to_path_buf(),
-        info,
-        timeseries,
-        probes,
-        last,
-        snapshots,
-    })
-}
-
 /// Simulates the missing runs of `case`, then measures it; returns its metrics and writes
 /// `OUT/CASE/summary.csv`.
 pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metric>> {
@@ -119,7 +52,7 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
             );
         }
         let rdir = dir.join(&spec.id);
-        if !opts.force && reusable(&rdir, spec) {
+        if !opts.force && saved::reusable(&rdir, spec) {
             continue;
         }
         if opts.progress {
@@ -127,7 +60,7 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
         }
         let observers: Vec<Box<dyn Observer + '_>> = vec![
             Box::new(probes::Probes::of(case)),
-            Box::new(Snapshots::at(spec.snapshot_times_s.clone())),
+            Box::new(snapshots::Snapshots::at(spec.snapshot_times_s.clone())),
         ];
         let label = PathBuf::from(format!("{}/{}", case.name(), spec.id));
         let ropts = RunOptions {
@@ -161,7 +94,8 @@ pub fn analyse_case(
         // a run still going (or killed) has no final state yet: not measured
         if RunInfo::path(&rdir).exists() && rdir.join(snapshots::FINAL).exists() {
             runs.push(
-                load_run(&rdir, &spec).with_context(|| format!("reading {}", rdir.display()))?,
+                saved::load_run(&rdir, &spec)
+                    .with_context(|| format!("reading {}", rdir.display()))?,
             );
         }
     }

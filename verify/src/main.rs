@@ -314,7 +314,7 @@ fn accuracy_cost(
     threads: Option<usize>,
     max_particles: Option<usize>,
 ) -> anyhow::Result<i32> {
-    use verify::study::{analysis, points};
+    use verify::study::points;
     let exe = std::env::current_exe()?;
     std::fs::create_dir_all(out)?;
     let (all, left_out): (Vec<_>, Vec<_>) =
@@ -339,7 +339,7 @@ fn accuracy_cost(
         );
         results.push(r);
     }
-    analysis::write(out, &results, &grid.variants())?;
+    verify::study::summary::write(out, &results, &grid.variants())?;
     if !left_out.is_empty() {
         use std::io::Write;
         let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();

@@ -1,7 +1,7 @@
 //! Running a scene: the time loop and the outputs that observe it.
 //!
-//! The loop ([`stepping`]) only steps the simulation and tells its [`Observer`]s of every step,
-//! every output time and the end. Each output is one observer in [`outputs`], built from its
+//! The loop (`stepping`) only steps the simulation and tells its [`Observer`]s of every step,
+//! every output time and the end. Each output is one observer in `outputs`, built from its
 //! option in [`RunOptions`]; callers add their own (the suite's probes and particle dumps). The
 //! run record (`run_info.json`) is written at the start and, last, at the end.
 

@@ -10,5 +10,6 @@
 pub mod analysis;
 pub mod grid;
 pub mod points;
+pub mod summary;
 
 pub use grid::{Grid, Point, Problem, Variant};

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use verify::cases;
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
+use verify::study::{run_all, StudyOptions};
 use verify::suite::runner::{self, SuiteOptions};
 use verify::suite::Fidelity;
 
@@ -218,7 +219,16 @@ fn main() {
                     threads,
                     max_particles,
                 },
-        } => exit_of(accuracy_cost(grid, &out, force, threads, max_particles)),
+        } => {
+            let opts = StudyOptions {
+                grid,
+                out,
+                force,
+                threads,
+                max_particles,
+            };
+            exit_of(study(&opts))
+        }
     };
     std::process::exit(code);
 }
@@ -307,53 +317,8 @@ fn exit_of(r: anyhow::Result<i32>) -> i32 {
     }
 }
 
-fn accuracy_cost(
-    grid: verify::study::Grid,
-    out: &Path,
-    force: bool,
-    threads: Option<usize>,
-    max_particles: Option<usize>,
-) -> anyhow::Result<i32> {
-    use verify::study::points;
-    let exe = std::env::current_exe()?;
-    std::fs::create_dir_all(out)?;
-    let (all, left_out): (Vec<_>, Vec<_>) =
-        grid.points()
-            .into_iter()
-            .partition(|p| match max_particles {
-                Some(m) => p.estimated_particles() <= m,
-                None => true,
-            });
-    let mut results = Vec::new();
-    for (k, p) in all.iter().enumerate() {
-        let r = points::run_point(p, out, &exe, threads, force)?;
-        eprintln!(
-            "[{}/{}] {}: error {:+.2} %, {:.1} s, {:.3e} particle-steps/s ({})",
-            k + 1,
-            all.len(),
-            p.id(),
-            100.0 * r.relative_error,
-            r.wall_time_s,
-            r.particle_steps_per_second,
-            r.status
-        );
-        results.push(r);
-    }
-    verify::study::summary::write(out, &results, &grid.variants())?;
-    if !left_out.is_empty() {
-        use std::io::Write;
-        let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();
-        let mut f = std::fs::OpenOptions::new()
-            .append(true)
-            .open(out.join("summary.md"))?;
-        writeln!(
-            f,
-            "\n**Left out of this run** (`--max-particles {}`): {} point(s) — {}.",
-            max_particles.unwrap_or(0),
-            left_out.len(),
-            ids.join(", ")
-        )?;
-    }
-    eprintln!("study: {}", out.join("summary.md").display());
+/// Runs the study with this very binary for each point; the exit code.
+fn study(opts: &StudyOptions) -> anyhow::Result<i32> {
+    run_all(opts, &std::env::current_exe()?)?;
     Ok(0)
 }

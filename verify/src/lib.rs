@@ -3,6 +3,10 @@
 //! `verify run SCENE.toml --out DIR` runs a scene and writes its time series, run record and
 //! snapshots. The analytic references ([`analytic`]) and measurements ([`measure`]) are what the
 //! paper checks are judged with.
+//!
+//! The modules are layered; each imports only those before it: [`analytic`], [`measure`] and
+//! [`output`] (leaves) ← [`run`] ← [`suite`] ← [`report`] ← [`cases`] ← [`study`] ← the
+//! command line. `tests/layers.rs` fails on any import circle between them.
 #![deny(missing_docs)]
 
 pub mod analytic;

@@ -1,6 +1,15 @@
 //! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in the README.
 
 use clap::{Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use verify::cases;
+use verify::report::summary;
+use verify::run::{self, load_scene, run_scene, RunOptions};
+use verify::study::{run_all, StudyOptions};
+use verify::suite::runner::{self, SuiteOptions};
+use verify::suite::Fidelity;
 
 /// glibc's allocator raises its mmap threshold each time a large block is freed, after which
 /// the large transient buffers of every neighbour rebuild (sort keys, permutation copies) come
@@ -14,12 +23,6 @@ fn tune_allocator() {
         libc::mallopt(libc::M_TRIM_THRESHOLD, 1024 * 1024);
     }
 }
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
-use verify::run::{load_scene, run_scene, RunOptions};
-use verify::suite::runner::{self, SuiteOptions};
-use verify::suite::{all_cases, Fidelity};
 
 #[derive(Parser)]
 #[command(
@@ -64,35 +67,79 @@ impl SuiteArgs {
     }
 }
 
+#[derive(clap::Args)]
+struct RunArgs {
+    /// The scene (TOML).
+    #[arg(required_unless_present = "resume")]
+    scene: Option<PathBuf>,
+    /// Output folder.
+    #[arg(long, required_unless_present = "resume", conflicts_with = "resume")]
+    out: Option<PathBuf>,
+    /// Continue the run in this folder from its checkpoint (bitwise as if never stopped).
+    #[arg(long, value_name = "DIR")]
+    resume: Option<PathBuf>,
+    /// Write a checkpoint every N steps.
+    #[arg(long, value_name = "N")]
+    checkpoint_steps: Option<u64>,
+    /// Write a checkpoint every M minutes of wall time.
+    #[arg(long, value_name = "M", default_value = "10")]
+    checkpoint_minutes: f64,
+    /// Write a particle snapshot (.vtu) every N outputs.
+    #[arg(long, value_name = "N")]
+    vtk: Option<u32>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_name = "N")]
+    threads: Option<usize>,
+    /// Overwrite a non-empty output folder.
+    #[arg(long)]
+    force: bool,
+}
+
+impl RunArgs {
+    /// Runs (or resumes) the scene; the exit code. Ctrl-C finishes the current step, writes a
+    /// checkpoint, flushes and exits with 130.
+    fn run(self) -> i32 {
+        let interrupt = Arc::new(AtomicBool::new(false));
+        let flag = interrupt.clone();
+        let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
+        let opts = RunOptions {
+            out_dir: self.resume.clone().or(self.out).unwrap_or_default(),
+            vtk_every: self.vtk,
+            threads: self.threads,
+            force: self.force,
+            progress: true,
+            checkpoint_steps: self.checkpoint_steps,
+            checkpoint_minutes: Some(self.checkpoint_minutes),
+            interrupt: Some(interrupt),
+        };
+        let result = match (&self.resume, &self.scene) {
+            (Some(_), _) => run::resume(&opts),
+            (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
+            (None, None) => unreachable!("clap requires a scene or --resume"),
+        };
+        match result {
+            Ok(info) => {
+                eprintln!(
+                    "done: {} steps, {:.3e} s simulated, {:.1} s wall, {:.3e} particle-steps/s",
+                    info.steps,
+                    info.simulated_time_s,
+                    info.wall_time_s,
+                    info.particle_steps_per_second
+                );
+                0
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                e.exit_code()
+            }
+        }
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene file (or continue a stopped run with --resume DIR).
-    Run {
-        /// The scene (TOML).
-        #[arg(required_unless_present = "resume")]
-        scene: Option<PathBuf>,
-        /// Output folder.
-        #[arg(long, required_unless_present = "resume", conflicts_with = "resume")]
-        out: Option<PathBuf>,
-        /// Continue the run in this folder from its checkpoint (bitwise as if never stopped).
-        #[arg(long, value_name = "DIR")]
-        resume: Option<PathBuf>,
-        /// Write a checkpoint every N steps.
-        #[arg(long, value_name = "N")]
-        checkpoint_steps: Option<u64>,
-        /// Write a checkpoint every M minutes of wall time.
-        #[arg(long, value_name = "M", default_value = "10")]
-        checkpoint_minutes: f64,
-        /// Write a particle snapshot (.vtu) every N outputs.
-        #[arg(long, value_name = "N")]
-        vtk: Option<u32>,
-        /// Worker threads (default: all cores).
-        #[arg(long, value_name = "N")]
-        threads: Option<usize>,
-        /// Overwrite a non-empty output folder.
-        #[arg(long)]
-        force: bool,
-    },
+    Run(RunArgs),
     /// List the verification cases.
     List {
         /// Show the runs at this fidelity.
@@ -156,69 +203,8 @@ fn main() {
     tune_allocator();
     let cli = Cli::parse();
     let code = match cli.command {
-        Command::Run {
-            scene,
-            out,
-            resume,
-            checkpoint_steps,
-            checkpoint_minutes,
-            vtk,
-            threads,
-            force,
-        } => {
-            // Ctrl-C: finish the current step, write a checkpoint, flush, exit 130
-            let interrupt = Arc::new(AtomicBool::new(false));
-            let flag = interrupt.clone();
-            let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
-            let opts = RunOptions {
-                out_dir: resume.clone().or(out).unwrap_or_default(),
-                vtk_every: vtk,
-                threads,
-                force,
-                progress: true,
-                checkpoint_steps,
-                checkpoint_minutes: Some(checkpoint_minutes),
-                resume: resume.is_some(),
-                interrupt: Some(interrupt),
-            };
-            let result = match (&resume, &scene) {
-                (Some(dir), _) => verify::output::checkpoint::scene_of(dir)
-                    .and_then(|(s, file)| run_scene(&s, &file, &opts)),
-                (None, Some(scene)) => load_scene(scene).and_then(|s| run_scene(&s, scene, &opts)),
-                (None, None) => unreachable!("clap requires a scene or --resume"),
-            };
-            match result {
-                Ok(info) => {
-                    eprintln!(
-                        "done: {} steps, {:.3e} s simulated, {:.1} s wall, {:.3e} particle-steps/s",
-                        info.steps,
-                        info.simulated_time_s,
-                        info.wall_time_s,
-                        info.particle_steps_per_second
-                    );
-                    0
-                }
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    e.exit_code()
-                }
-            }
-        }
-        Command::List { fidelity } => {
-            for case in all_cases() {
-                println!("{:<24} {}", case.name(), case.title());
-                println!("{:<24} source: {}", "", case.source());
-                println!(
-                    "{:<24} effects: {}",
-                    "",
-                    verify::suite::DeclaredEffects::describe_declared(case.effects())
-                );
-                let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
-                println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
-                println!("{:<24} resolution: {}", "", case.resolution(fidelity));
-            }
-            0
-        }
+        Command::Run(args) => args.run(),
+        Command::List { fidelity } => list(fidelity),
         Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
         Command::All { suite, compare } => {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
@@ -233,9 +219,35 @@ fn main() {
                     threads,
                     max_particles,
                 },
-        } => exit_of(accuracy_cost(grid, &out, force, threads, max_particles)),
+        } => {
+            let opts = StudyOptions {
+                grid,
+                out,
+                force,
+                threads,
+                max_particles,
+            };
+            exit_of(study(&opts))
+        }
     };
     std::process::exit(code);
+}
+
+/// Prints every case: title, source, effects, and its runs and resolution at `fidelity`.
+fn list(fidelity: Fidelity) -> i32 {
+    for case in cases::all() {
+        println!("{:<24} {}", case.name(), case.title());
+        println!("{:<24} source: {}", "", case.source());
+        println!(
+            "{:<24} effects: {}",
+            "",
+            verify::suite::DeclaredEffects::describe_declared(case.effects())
+        );
+        let runs: Vec<String> = case.runs(fidelity).iter().map(|r| r.id.clone()).collect();
+        println!("{:<24} {} runs: {}", "", fidelity.name(), runs.join(" "));
+        println!("{:<24} resolution: {}", "", case.resolution(fidelity));
+    }
+    0
 }
 
 /// Runs the named cases (or all) and writes the summaries; the exit code.
@@ -244,7 +256,7 @@ fn run_suite(
     names: Option<&[String]>,
     baseline: Option<&Path>,
 ) -> anyhow::Result<i32> {
-    let cases = all_cases();
+    let cases = cases::all();
     if let Some(names) = names {
         for n in names {
             if !cases.iter().any(|c| c.name() == n) {
@@ -267,7 +279,7 @@ fn run_suite(
             case.name()
         );
     }
-    let regressions = runner::write_summaries(&opts.out, opts.fidelity, baseline)?;
+    let regressions = summary::write_all(&opts.out, opts.fidelity, &cases, baseline)?;
     eprintln!("summary: {}", opts.out.join("summary.md").display());
     if let Some(r) = regressions {
         if !r.is_empty() {
@@ -284,12 +296,13 @@ fn run_suite(
 
 fn report(out: &Path) -> anyhow::Result<i32> {
     let record = runner::read_record(out)?;
-    for case in all_cases() {
+    let cases = cases::all();
+    for case in &cases {
         if out.join(case.name()).exists() {
             runner::analyse_case(case.as_ref(), record.fidelity, out)?;
         }
     }
-    runner::write_summaries(out, record.fidelity, None)?;
+    summary::write_all(out, record.fidelity, &cases, None)?;
     eprintln!("summary: {}", out.join("summary.md").display());
     Ok(0)
 }
@@ -304,53 +317,8 @@ fn exit_of(r: anyhow::Result<i32>) -> i32 {
     }
 }
 
-fn accuracy_cost(
-    grid: verify::study::Grid,
-    out: &Path,
-    force: bool,
-    threads: Option<usize>,
-    max_particles: Option<usize>,
-) -> anyhow::Result<i32> {
-    use verify::study::{analysis, points};
-    let exe = std::env::current_exe()?;
-    std::fs::create_dir_all(out)?;
-    let (all, left_out): (Vec<_>, Vec<_>) =
-        grid.points()
-            .into_iter()
-            .partition(|p| match max_particles {
-                Some(m) => p.estimated_particles() <= m,
-                None => true,
-            });
-    let mut results = Vec::new();
-    for (k, p) in all.iter().enumerate() {
-        let r = points::run_point(p, out, &exe, threads, force)?;
-        eprintln!(
-            "[{}/{}] {}: error {:+.2} %, {:.1} s, {:.3e} particle-steps/s ({})",
-            k + 1,
-            all.len(),
-            p.id(),
-            100.0 * r.relative_error,
-            r.wall_time_s,
-            r.particle_steps_per_second,
-            r.status
-        );
-        results.push(r);
-    }
-    analysis::write(out, &results, &grid.variants())?;
-    if !left_out.is_empty() {
-        use std::io::Write;
-        let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();
-        let mut f = std::fs::OpenOptions::new()
-            .append(true)
-            .open(out.join("summary.md"))?;
-        writeln!(
-            f,
-            "\n**Left out of this run** (`--max-particles {}`): {} point(s) — {}.",
-            max_particles.unwrap_or(0),
-            left_out.len(),
-            ids.join(", ")
-        )?;
-    }
-    eprintln!("study: {}", out.join("summary.md").display());
+/// Runs the study with this very binary for each point; the exit code.
+fn study(opts: &StudyOptions) -> anyhow::Result<i32> {
+    run_all(opts, &std::env::current_exe()?)?;
     Ok(0)
 }

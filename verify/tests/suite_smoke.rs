@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 use verify::suite::runner::{self, SuiteOptions};
-use verify::suite::{all_cases, Case, Fidelity, Metric};
+use verify::suite::{Case, Fidelity, Metric};
 
 fn out_dir(case: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("verify-smoke-{}-{case}", std::process::id()));
@@ -13,7 +13,7 @@ fn out_dir(case: &str) -> PathBuf {
 }
 
 fn case(name: &str) -> Box<dyn Case> {
-    all_cases()
+    verify::cases::all()
         .into_iter()
         .find(|c| c.name() == name)
         .expect("case exists")

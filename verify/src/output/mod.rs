@@ -1,10 +1,13 @@
-//! Files a run writes: the observables' time series (CSV), the run record (JSON) and particle
-//! snapshots (VTK).
+//! Files a run writes: the observables' time series (CSV), the run record (JSON), particle
+//! snapshots (VTK) and the checkpoint; and the error of a run that did not complete.
 
 pub mod checkpoint;
+pub mod error;
 pub mod run_info;
 pub mod timeseries;
 pub mod vtk;
+
+pub use error::RunError;
 
 use std::path::Path;
 

@@ -1,8 +1,12 @@
 //! `run_info.json`: the record of a run — the scene as resolved, the effects built, where and
-//! how it ran, and how it ended.
+//! how it ran, and how it ended. [`RunInfo::read`] and [`RunInfo::write`] are the only readers
+//! and writer of the file.
 
+use super::{atomic_write, RunError};
 use serde::{Deserialize, Serialize};
 use solver::simulation::StepTimings;
+use solver::Simulation;
+use std::path::{Path, PathBuf};
 
 /// How a run ended (or that it is still going).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -64,9 +68,73 @@ pub struct RunInfo {
     pub error: Option<String>,
 }
 
+impl RunInfo {
+    /// The record of a run of `sim` (just built from `scene_file`) on `threads` threads, before
+    /// its first step.
+    pub fn new(sim: &Simulation, scene_file: &Path, threads: usize) -> RunInfo {
+        RunInfo {
+            scene_file: scene_file.display().to_string(),
+            scene: sim.scene.clone(),
+            effects: sim.model.effects.names(),
+            git_revision: env!("GIT_REVISION").to_string(),
+            threads,
+            fluid_particles: sim.particles.n_fluid,
+            wall_particles: sim.particles.n_wall(),
+            bodies: sim.inventory.bodies.clone(),
+            walls: sim.inventory.walls.clone(),
+            steps: 0,
+            simulated_time_s: 0.0,
+            wall_time_s: 0.0,
+            particle_steps_per_second: 0.0,
+            mean_neighbours: 0.0,
+            neighbour_builds: 0,
+            timings: Default::default(),
+            peak_memory_bytes: None,
+            status: Status::Running,
+            error: None,
+        }
+    }
+
+    /// Records where `sim` got to after `wall_time_s` [s] of time loop (over every part of the
+    /// run, resumed ones included): steps, time, rates, neighbours, timings and peak memory.
+    pub fn record_progress(&mut self, sim: &Simulation, wall_time_s: f64) {
+        self.steps = sim.step;
+        self.simulated_time_s = sim.time_s;
+        self.wall_time_s = wall_time_s;
+        self.particle_steps_per_second =
+            sim.step as f64 * sim.particles.n_fluid as f64 / wall_time_s.max(1e-9);
+        self.mean_neighbours = sim.mean_neighbours();
+        self.neighbour_builds = sim.search.builds;
+        self.timings = sim.timings;
+        self.peak_memory_bytes = peak_memory_bytes();
+    }
+
+    /// The path of the record of the run in `dir`.
+    pub fn path(dir: &Path) -> PathBuf {
+        dir.join("run_info.json")
+    }
+
+    /// Reads the record of the run in `dir`.
+    pub fn read(dir: &Path) -> Result<RunInfo, RunError> {
+        let path = Self::path(dir);
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| RunError::io("cannot read", &path, e))?;
+        serde_json::from_str(&text)
+            .map_err(|e| RunError::Output(format!("{}: {e}", path.display())))
+    }
+
+    /// Writes the record into `dir`, atomically.
+    pub fn write(&self, dir: &Path) -> Result<(), RunError> {
+        let path = Self::path(dir);
+        let json =
+            serde_json::to_string_pretty(self).map_err(|e| RunError::Output(e.to_string()))?;
+        atomic_write(&path, json.as_bytes()).map_err(|e| RunError::io("cannot write", &path, e))
+    }
+}
+
 /// The process's peak resident memory [bytes], from `/proc/self/status` (`VmHWM`); `None`
 /// where that file does not exist.
-pub fn peak_memory_bytes() -> Option<u64> {
+fn peak_memory_bytes() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;

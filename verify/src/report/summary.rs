@@ -1,58 +1,33 @@
-//! `summary.csv` (machine-readable, also the regression baseline format) and `summary.md` (what
-//! a reviewer reads first).
+//! The suite's summaries: `summary.md` (what a reviewer reads first) and `summary.csv`
+//! (machine-readable, also the regression baseline format), from every case measured so far.
 
-use crate::suite::{Case, Fidelity, Metric};
+use crate::suite::compare::{self, summary_csv, Regression};
+use crate::suite::{runner, Case, Fidelity, Metric};
 use std::fmt::Write as _;
 use std::path::Path;
 
-const COLUMNS: [&str; 13] = [
-    "case",
-    "name",
-    "unit",
-    "value",
-    "reference",
-    "paper",
-    "error",
-    "tolerance",
-    "tolerance_source",
-    "pass",
-    "particles",
-    "wall_time_s",
-    "note",
-];
-
-fn opt(v: Option<f64>) -> String {
-    v.map(|x| format!("{x:e}")).unwrap_or_default()
-}
-
-/// Writes metrics as CSV.
-pub fn write_csv(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(COLUMNS)?;
-    for m in metrics {
-        w.write_record([
-            m.case.clone(),
-            m.name.clone(),
-            m.unit.clone(),
-            format!("{:e}", m.value),
-            opt(m.reference),
-            opt(m.paper),
-            opt(m.error()),
-            opt(m.tolerance.as_ref().map(|t| t.abs)),
-            m.tolerance
-                .as_ref()
-                .map(|t| t.source.clone())
-                .unwrap_or_default(),
-            m.pass()
-                .map(|p| if p { "pass" } else { "FAIL" }.to_string())
-                .unwrap_or_default(),
-            m.particles.to_string(),
-            format!("{:.1}", m.wall_time_s),
-            m.note.clone(),
-        ])?;
-    }
-    crate::output::atomic_write(path, &w.into_inner()?)?;
-    Ok(())
+/// Rewrites `OUT/summary.md` and `OUT/summary.csv` from every one of `cases` measured so far
+/// under `out`; with a baseline, also compares and returns the regressions.
+pub fn write_all(
+    out: &Path,
+    fidelity: Fidelity,
+    cases: &[Box<dyn Case>],
+    baseline: Option<&Path>,
+) -> anyhow::Result<Option<Vec<Regression>>> {
+    let metrics = runner::saved_metrics(out, cases)?;
+    let regressions = match baseline {
+        Some(b) => Some(compare::compare(&metrics, b)?),
+        None => None,
+    };
+    summary_csv::write(&out.join("summary.csv"), &metrics)?;
+    write_markdown(
+        &out.join("summary.md"),
+        fidelity,
+        cases,
+        &metrics,
+        regressions.as_deref(),
+    )?;
+    Ok(regressions)
 }
 
 /// A number with 4 significant digits (or a dash).
@@ -80,15 +55,33 @@ fn sig_opt(v: Option<f64>) -> String {
     v.map(sig).unwrap_or_else(|| "—".into())
 }
 
-/// Writes `summary.md`: per case its source, effects, resolution and a table of metrics.
-pub fn write_markdown(
+/// Writes `summary.md`: the tally and regressions, then per case its source, effects,
+/// resolution, a table of metrics, their notes and links to its plots.
+fn write_markdown(
     path: &Path,
     fidelity: Fidelity,
-    cases: &[&dyn Case],
+    cases: &[Box<dyn Case>],
     metrics: &[Metric],
-    regressions: Option<&[crate::suite::compare::Regression]>,
+    regressions: Option<&[Regression]>,
 ) -> anyhow::Result<()> {
     let mut s = String::new();
+    header(&mut s, fidelity, metrics, regressions);
+    let out = path.parent().unwrap_or(Path::new("."));
+    for case in cases {
+        let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
+        case_section(&mut s, case.as_ref(), fidelity, &ms, out);
+    }
+    crate::output::atomic_write(path, s.as_bytes())?;
+    Ok(())
+}
+
+/// The title, how many metrics pass, and the regressions against a baseline if checked.
+fn header(
+    s: &mut String,
+    fidelity: Fidelity,
+    metrics: &[Metric],
+    regressions: Option<&[Regression]>,
+) {
     let judged: Vec<&Metric> = metrics.iter().filter(|m| m.pass().is_some()).collect();
     let passed = judged.iter().filter(|m| m.pass() == Some(true)).count();
     let _ = writeln!(s, "# Verification summary\n");
@@ -117,72 +110,76 @@ pub fn write_markdown(
             s.push('\n');
         }
     }
-    for case in cases {
-        let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
-        let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
-        let _ = writeln!(s, "Source: {}.  ", case.source());
+}
+
+/// The section of one case, with its metrics `ms` and the plots in `out/CASE`.
+fn case_section(s: &mut String, case: &dyn Case, fidelity: Fidelity, ms: &[&Metric], out: &Path) {
+    let _ = writeln!(s, "## {} — {}\n", case.name(), case.title());
+    let _ = writeln!(s, "Source: {}.  ", case.source());
+    let _ = writeln!(
+        s,
+        "Effects: {}.  ",
+        crate::suite::DeclaredEffects::describe_declared(case.effects())
+    );
+    let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
+    if ms.is_empty() {
+        let _ = writeln!(s, "_No results: the case was not run._\n");
+        return;
+    }
+    metric_table(s, ms);
+    let notes: Vec<String> = ms
+        .iter()
+        .filter(|m| !m.note.is_empty() || m.tolerance.is_some())
+        .map(|m| {
+            let tol = m
+                .tolerance
+                .as_ref()
+                .map(|t| format!(" Tolerance: {}.", t.source))
+                .unwrap_or_default();
+            format!("- *{}*: {}{}", m.name, m.note, tol)
+        })
+        .collect();
+    if !notes.is_empty() {
+        let _ = writeln!(s, "\nNotes:\n");
+        for n in notes {
+            let _ = writeln!(s, "{n}");
+        }
+    }
+    let plots = plots_of(out, case.name());
+    if !plots.is_empty() {
+        let _ = writeln!(s, "\nPlots: {}", plots.join(", "));
+    }
+    s.push('\n');
+}
+
+/// One row per metric: reference, paper, value, error, tolerance, verdict and cost.
+fn metric_table(s: &mut String, ms: &[&Metric]) {
+    let _ = writeln!(s, "| metric | unit | reference | paper | this project | error | tolerance | pass | particles | wall time [s] |");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    for m in ms {
+        let pass = match m.pass() {
+            Some(true) => "pass",
+            Some(false) => "**FAIL**",
+            None => "—",
+        };
         let _ = writeln!(
             s,
-            "Effects: {}.  ",
-            crate::suite::DeclaredEffects::describe_declared(case.effects())
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
+            m.name,
+            m.unit,
+            sig_opt(m.reference),
+            sig_opt(m.paper),
+            sig(m.value),
+            sig_opt(m.error()),
+            m.tolerance
+                .as_ref()
+                .map(|t| format!("±{}", sig(t.abs)))
+                .unwrap_or_else(|| "—".into()),
+            pass,
+            m.particles,
+            m.wall_time_s
         );
-        let _ = writeln!(s, "Resolution: {}\n", case.resolution(fidelity));
-        if ms.is_empty() {
-            let _ = writeln!(s, "_No results: the case was not run._\n");
-            continue;
-        }
-        let _ = writeln!(s, "| metric | unit | reference | paper | this project | error | tolerance | pass | particles | wall time [s] |");
-        let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
-        for m in &ms {
-            let pass = match m.pass() {
-                Some(true) => "pass",
-                Some(false) => "**FAIL**",
-                None => "—",
-            };
-            let _ = writeln!(
-                s,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
-                m.name,
-                m.unit,
-                sig_opt(m.reference),
-                sig_opt(m.paper),
-                sig(m.value),
-                sig_opt(m.error()),
-                m.tolerance
-                    .as_ref()
-                    .map(|t| format!("±{}", sig(t.abs)))
-                    .unwrap_or_else(|| "—".into()),
-                pass,
-                m.particles,
-                m.wall_time_s
-            );
-        }
-        let notes: Vec<String> = ms
-            .iter()
-            .filter(|m| !m.note.is_empty() || m.tolerance.is_some())
-            .map(|m| {
-                let tol = m
-                    .tolerance
-                    .as_ref()
-                    .map(|t| format!(" Tolerance: {}.", t.source))
-                    .unwrap_or_default();
-                format!("- *{}*: {}{}", m.name, m.note, tol)
-            })
-            .collect();
-        if !notes.is_empty() {
-            let _ = writeln!(s, "\nNotes:\n");
-            for n in notes {
-                let _ = writeln!(s, "{n}");
-            }
-        }
-        let plots = plots_of(path.parent().unwrap_or(Path::new(".")), case.name());
-        if !plots.is_empty() {
-            let _ = writeln!(s, "\nPlots: {}", plots.join(", "));
-        }
-        s.push('\n');
     }
-    crate::output::atomic_write(path, s.as_bytes())?;
-    Ok(())
 }
 
 /// Links to the case's PNG plots, relative to the summary.

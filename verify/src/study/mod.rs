@@ -10,5 +10,8 @@
 pub mod analysis;
 pub mod grid;
 pub mod points;
+mod run_all;
+pub mod summary;
 
 pub use grid::{Grid, Point, Problem, Variant};
+pub use run_all::{run_all, StudyOptions};

@@ -47,10 +47,8 @@ pub fn run_point(
 ) -> anyhow::Result<PointResult> {
     let dir = out.join(point.id());
     let scene = point.scene();
-    let reusable = std::fs::read_to_string(dir.join("run_info.json"))
-        .ok()
-        .and_then(|t| serde_json::from_str::<RunInfo>(&t).ok())
-        .is_some_and(|i| i.status != Status::Running && i.scene == scene);
+    let reusable =
+        RunInfo::read(&dir).is_ok_and(|i| i.status != Status::Running && i.scene == scene);
     if force || !reusable {
         std::fs::create_dir_all(&dir)?;
         let scene_file = dir.with_extension("toml");
@@ -76,7 +74,7 @@ pub fn run_point(
 
 /// Measures a finished point from its folder.
 pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
-    let info: RunInfo = serde_json::from_str(&std::fs::read_to_string(dir.join("run_info.json"))?)?;
+    let info = RunInfo::read(dir)?;
     let ts = Table::read(&dir.join("timeseries.csv"))?;
     let reference = point.problem.reference();
     let l0 = point.l0();

@@ -7,8 +7,11 @@
 //! reference, and metrics the baseline could not measure, are not judged. A metric of the
 //! baseline that is no longer produced regresses too.
 
+pub mod summary_csv;
+
 use super::Metric;
 use std::path::Path;
+use summary_csv::Row;
 
 /// Why a metric regressed.
 #[derive(Clone, Debug, PartialEq)]
@@ -21,43 +24,9 @@ pub struct Regression {
     pub message: String,
 }
 
-/// A baseline row.
-#[derive(Clone, Debug)]
-struct Row {
-    case: String,
-    name: String,
-    error: Option<f64>,
-    tolerance: Option<f64>,
-}
-
-fn read(path: &Path) -> anyhow::Result<Vec<Row>> {
-    let mut rdr = csv::Reader::from_path(path)?;
-    let headers = rdr.headers()?.clone();
-    let col = |n: &str| {
-        headers
-            .iter()
-            .position(|h| h == n)
-            .ok_or_else(|| anyhow::anyhow!("baseline lacks column {n}"))
-    };
-    let (c_case, c_name, c_err, c_tol) =
-        (col("case")?, col("name")?, col("error")?, col("tolerance")?);
-    let mut rows = Vec::new();
-    for rec in rdr.records() {
-        let rec = rec?;
-        let num = |k: usize| rec.get(k).and_then(|s| s.parse::<f64>().ok());
-        rows.push(Row {
-            case: rec[c_case].to_string(),
-            name: rec[c_name].to_string(),
-            error: num(c_err),
-            tolerance: num(c_tol),
-        });
-    }
-    Ok(rows)
-}
-
 /// Compares `metrics` with the baseline file; returns the regressions.
 pub fn compare(metrics: &[Metric], baseline: &Path) -> anyhow::Result<Vec<Regression>> {
-    let rows = read(baseline)?;
+    let rows = summary_csv::read(baseline)?;
     Ok(compare_rows(metrics, &rows))
 }
 

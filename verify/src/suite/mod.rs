@@ -183,8 +183,3 @@ pub trait Case: Sync {
         dir: &Path,
     ) -> anyhow::Result<Vec<Metric>>;
 }
-
-/// Every case of the suite, in report order.
-pub fn all_cases() -> Vec<Box<dyn Case>> {
-    crate::cases::all()
-}

@@ -1,16 +1,16 @@
 //! Running cases: simulate what is missing, reuse what is finished, measure, and write the
 //! case summaries.
 
-use super::dump::Dump;
-use super::{Case, Fidelity, Metric, RunData, RunSpec};
+mod probes;
+mod saved;
+mod snapshots;
+
+use super::compare::summary_csv;
+use super::{Case, Fidelity, Metric};
 use crate::output::run_info::RunInfo;
-use crate::output::timeseries::Table;
 use crate::run::{run_scene_observed, Observer, RunError, RunOptions};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
-use solver::Simulation;
-use std::fs::File;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// Options of a suite run.
@@ -35,120 +35,6 @@ pub struct SuiteRecord {
     pub fidelity: Fidelity,
 }
 
-/// Records probes and particle dumps of one run.
-struct CaseObserver<'c> {
-    case: &'c dyn Case,
-    probes: Option<BufWriter<File>>,
-    snapshot_times: Vec<f64>,
-    next: usize,
-}
-
-impl Observer for CaseObserver<'_> {
-    fn on_output(&mut self, sim: &Simulation, k: u64, out: &Path) -> std::io::Result<()> {
-        let values = self.case.probe(sim);
-        if k == 0 && !values.is_empty() {
-            let mut w = BufWriter::new(File::create(out.join("probes.csv"))?);
-            let names: Vec<&str> = values.iter().map(|v| v.0).collect();
-            writeln!(w, "time_s,{}", names.join(","))?;
-            self.probes = Some(w);
-        }
-        if let Some(w) = &mut self.probes {
-            let row: Vec<String> = values.iter().map(|v| format!("{:e}", v.1)).collect();
-            writeln!(w, "{:e},{}", sim.time_s, row.join(","))?;
-            w.flush()?;
-        }
-        while self.next < self.snapshot_times.len()
-            && sim.time_s >= self.snapshot_times[self.next] * (1.0 - 1e-9)
-        {
-            let t = self.snapshot_times[self.next];
-            Dump::of(&sim.particles, sim.time_s).write(&out.join(snapshot_name(t)), false)?;
-            self.next += 1;
-        }
-        Ok(())
-    }
-
-    fn on_end(&mut self, sim: &Simulation, out: &Path) -> std::io::Result<()> {
-        Dump::of(&sim.particles, sim.time_s).write(&out.join("particles_final.csv"), false)
-    }
-}
-
-fn snapshot_name(t: f64) -> String {
-    format!("particles_t{:.6}ms.csv", t * 1e3)
-}
-
-/// Whether `dir` holds a finished run of exactly `spec`'s scene.
-fn reusable(dir: &Path, spec: &RunSpec) -> bool {
-    let Ok(text) = std::fs::read_to_string(dir.join("run_info.json")) else {
-        return false;
-    };
-    let Ok(info) = serde_json::from_str::<RunInfo>(&text) else {
-        return false;
-    };
-    use crate::output::run_info::Status;
-    matches!(info.status, Status::Completed | Status::Failed)
-        && info.scene == spec.scene
-        && dir.join("particles_final.csv").exists()
-}
-
-/// The wall particles of a scene as a dump (empty if it has none).
-fn wall_dump(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
-    if scene.walls.is_empty() {
-        return Ok(None);
-    }
-    let model = solver::Model::from_scene(scene)?;
-    let (p, _, _) = solver::setup::build_particles(scene, &model)?;
-    let n = p.n_wall();
-    Ok(Some(Dump {
-        time_s: 0.0,
-        pos: p.pos[p.n_fluid..].iter().map(|x| [x.x, x.y, x.z]).collect(),
-        vel: vec![[0.0; 3]; n],
-        phase: p.phase[p.n_fluid..].to_vec(),
-        wall: vec![true; n],
-    }))
-}
-
-/// Reads a run's folder.
-pub fn load_run(dir: &Path, spec: &RunSpec) -> anyhow::Result<RunData> {
-    let info: RunInfo = serde_json::from_str(
-        &std::fs::read_to_string(dir.join("run_info.json"))
-            .with_context(|| format!("{}", dir.display()))?,
-    )?;
-    let timeseries = Table::read(&dir.join("timeseries.csv"))?;
-    let probes = if dir.join("probes.csv").exists() {
-        Table::read(&dir.join("probes.csv"))?
-    } else {
-        Table::default()
-    };
-    // walls never move: rebuilt from the scene rather than stored
-    let walls = wall_dump(&info.scene)?;
-    let with_walls = |mut d: Dump| {
-        if let Some(w) = &walls {
-            d.pos.extend_from_slice(&w.pos);
-            d.vel.extend_from_slice(&w.vel);
-            d.phase.extend_from_slice(&w.phase);
-            d.wall.extend_from_slice(&w.wall);
-        }
-        d
-    };
-    let last = with_walls(Dump::read(&dir.join("particles_final.csv"))?);
-    let mut snapshots = Vec::new();
-    for &t in &spec.snapshot_times_s {
-        let p = dir.join(snapshot_name(t));
-        if p.exists() {
-            snapshots.push((t, with_walls(Dump::read(&p)?)));
-        }
-    }
-    Ok(RunData {
-        id: spec.id.clone(),
-        dir: dir.to_path_buf(),
-        info,
-        timeseries,
-        probes,
-        last,
-        snapshots,
-    })
-}
-
 /// Simulates the missing runs of `case`, then measures it; returns its metrics and writes
 /// `OUT/CASE/summary.csv`.
 pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metric>> {
@@ -166,18 +52,16 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
             );
         }
         let rdir = dir.join(&spec.id);
-        if !opts.force && reusable(&rdir, spec) {
+        if !opts.force && saved::reusable(&rdir, spec) {
             continue;
         }
         if opts.progress {
             eprintln!("{} / {}", case.name(), spec.id);
         }
-        let mut observer = CaseObserver {
-            case,
-            probes: None,
-            snapshot_times: spec.snapshot_times_s.clone(),
-            next: 0,
-        };
+        let observers: Vec<Box<dyn Observer + '_>> = vec![
+            Box::new(probes::Probes::of(case)),
+            Box::new(snapshots::Snapshots::at(spec.snapshot_times_s.clone())),
+        ];
         let label = PathBuf::from(format!("{}/{}", case.name(), spec.id));
         let ropts = RunOptions {
             out_dir: rdir.clone(),
@@ -187,7 +71,7 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
             progress: opts.progress,
             ..Default::default()
         };
-        match run_scene_observed(&spec.scene, &label, &ropts, Some(&mut observer)) {
+        match run_scene_observed(&spec.scene, &label, &ropts, observers) {
             Ok(_) => {}
             // a run that fails is a result: its record says so and the case reports it
             Err(RunError::Simulation(e)) => eprintln!("{}/{}: {e}", case.name(), spec.id),
@@ -208,23 +92,24 @@ pub fn analyse_case(
     for spec in case.runs(fidelity) {
         let rdir = dir.join(&spec.id);
         // a run still going (or killed) has no final state yet: not measured
-        if rdir.join("run_info.json").exists() && rdir.join("particles_final.csv").exists() {
+        if RunInfo::path(&rdir).exists() && rdir.join(snapshots::FINAL).exists() {
             runs.push(
-                load_run(&rdir, &spec).with_context(|| format!("reading {}", rdir.display()))?,
+                saved::load_run(&rdir, &spec)
+                    .with_context(|| format!("reading {}", rdir.display()))?,
             );
         }
     }
     let metrics = case.analyse(fidelity, &runs, &dir)?;
-    crate::report::summary::write_csv(&dir.join("summary.csv"), &metrics)?;
+    summary_csv::write(&dir.join("summary.csv"), &metrics)?;
     let json = serde_json::to_string_pretty(&metrics)?;
     crate::output::atomic_write(&dir.join("metrics.json"), json.as_bytes())?;
     Ok(metrics)
 }
 
-/// The metrics of every case measured so far under `out`, in report order.
-pub fn saved_metrics(out: &Path) -> anyhow::Result<Vec<Metric>> {
+/// The metrics of every one of `cases` measured so far under `out`, in their order.
+pub fn saved_metrics(out: &Path, cases: &[Box<dyn Case>]) -> anyhow::Result<Vec<Metric>> {
     let mut all = Vec::new();
-    for case in super::all_cases() {
+    for case in cases {
         let p = out.join(case.name()).join("metrics.json");
         if p.exists() {
             let ms: Vec<Metric> = serde_json::from_str(&std::fs::read_to_string(&p)?)?;
@@ -232,31 +117,6 @@ pub fn saved_metrics(out: &Path) -> anyhow::Result<Vec<Metric>> {
         }
     }
     Ok(all)
-}
-
-/// Rewrites `OUT/summary.md` and `OUT/summary.csv` from every case measured so far; with a
-/// baseline, also compares and returns the regressions.
-pub fn write_summaries(
-    out: &Path,
-    fidelity: Fidelity,
-    baseline: Option<&Path>,
-) -> anyhow::Result<Option<Vec<super::compare::Regression>>> {
-    let metrics = saved_metrics(out)?;
-    let regressions = match baseline {
-        Some(b) => Some(super::compare::compare(&metrics, b)?),
-        None => None,
-    };
-    let cases = super::all_cases();
-    let refs: Vec<&dyn Case> = cases.iter().map(|c| c.as_ref()).collect();
-    crate::report::summary::write_csv(&out.join("summary.csv"), &metrics)?;
-    crate::report::summary::write_markdown(
-        &out.join("summary.md"),
-        fidelity,
-        &refs,
-        &metrics,
-        regressions.as_deref(),
-    )?;
-    Ok(regressions)
 }
 
 /// Writes the record `verify report` reads.

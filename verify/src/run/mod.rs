@@ -1,0 +1,70 @@
+//! Running a scene: the time loop and the outputs that observe it.
+//!
+//! The loop (`stepping`) only steps the simulation and tells its [`Observer`]s of every step,
+//! every output time and the end. Each output is one observer in `outputs`, built from its
+//! option in [`RunOptions`]; callers add their own (the suite's probes and particle dumps). The
+//! run record (`run_info.json`) is written at the start and, last, at the end.
+
+mod observer;
+mod outputs;
+mod start;
+mod stepping;
+
+pub use crate::output::RunError;
+pub use observer::{Observer, RunView};
+pub use start::{load_scene, prepare_out_dir};
+
+use crate::output::run_info::RunInfo;
+use solver::Scene;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use stepping::Run;
+
+/// Options of a run.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// Output folder.
+    pub out_dir: PathBuf,
+    /// Write a `.vtu` snapshot every this many outputs.
+    pub vtk_every: Option<u32>,
+    /// Worker threads (default: all cores).
+    pub threads: Option<usize>,
+    /// Overwrite an existing, non-empty output folder.
+    pub force: bool,
+    /// Show a progress bar on stderr.
+    pub progress: bool,
+    /// Write a checkpoint every this many steps.
+    pub checkpoint_steps: Option<u64>,
+    /// Write a checkpoint every this many minutes of wall time.
+    pub checkpoint_minutes: Option<f64>,
+    /// Set (e.g. by Ctrl-C) to stop after the current step with a checkpoint.
+    pub interrupt: Option<Arc<AtomicBool>>,
+}
+
+/// Runs `scene` (read from `scene_file`) with `opts`; returns the run record (also written to
+/// `run_info.json`, with status `failed` if the simulation stopped on an error).
+pub fn run_scene(scene: &Scene, scene_file: &Path, opts: &RunOptions) -> Result<RunInfo, RunError> {
+    run_scene_observed(scene, scene_file, opts, Vec::new())
+}
+
+/// [`run_scene`] with more observers, told of the run after the standard outputs.
+pub fn run_scene_observed(
+    scene: &Scene,
+    scene_file: &Path,
+    opts: &RunOptions,
+    observers: Vec<Box<dyn Observer + '_>>,
+) -> Result<RunInfo, RunError> {
+    prepare_out_dir(&opts.out_dir, opts.force)?;
+    start::in_pool(opts.threads, |threads| {
+        let run = Run::fresh(scene, scene_file, &opts.out_dir, threads)?;
+        run.drive(opts, observers)
+    })
+}
+
+/// Continues the run in `opts.out_dir` from its checkpoint, as if it had never stopped.
+pub fn resume(opts: &RunOptions) -> Result<RunInfo, RunError> {
+    start::in_pool(opts.threads, |threads| {
+        Run::resumed(&opts.out_dir, threads)?.drive(opts, Vec::new())
+    })
+}

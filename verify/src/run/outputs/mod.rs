@@ -1,0 +1,33 @@
+//! The standard outputs of a run, one observer per file: the time series (always), `.vtu`
+//! snapshots (`vtk_every`), checkpoints (`checkpoint_steps`, `checkpoint_minutes`, and on an
+//! interrupt) and the progress bar (`progress`). A new output is one file here and its option.
+
+mod checkpoint;
+mod progress;
+mod timeseries;
+mod vtu;
+
+use super::observer::{Observer, Observers, RunView};
+use super::RunOptions;
+use crate::output::RunError;
+
+/// The observers of a run with `opts` that starts (or, `resumed`, continues) at `run`: the
+/// standard outputs, then `extra`, then the progress bar.
+pub(super) fn from_options<'o>(
+    opts: &RunOptions,
+    run: &RunView,
+    resumed: bool,
+    extra: Vec<Box<dyn Observer + 'o>>,
+) -> Result<Observers<'o>, RunError> {
+    let mut list: Vec<Box<dyn Observer + 'o>> =
+        vec![Box::new(timeseries::Timeseries::open(run, resumed)?)];
+    if let Some(every) = opts.vtk_every {
+        list.push(Box::new(vtu::Vtu::every(every)));
+    }
+    list.push(Box::new(checkpoint::Checkpoints::new(opts, run)));
+    list.extend(extra);
+    if opts.progress {
+        list.push(Box::new(progress::Progress::new(run)));
+    }
+    Ok(Observers(list))
+}

@@ -1,0 +1,67 @@
+//! The whole study: every point of a grid (up to a particle count) run in its own process and
+//! measured, then its outputs written.
+
+use super::{points, summary, Grid};
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Options of a study.
+#[derive(Clone, Debug)]
+pub struct StudyOptions {
+    /// The points to run.
+    pub grid: Grid,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Re-run finished points.
+    pub force: bool,
+    /// Worker threads per run (default: all cores).
+    pub threads: Option<usize>,
+    /// Leave out the points with more fluid particles than this (`summary.md` lists them).
+    pub max_particles: Option<usize>,
+}
+
+/// Runs (or reuses) and measures every point with `exe`, the `verify` binary, reporting each
+/// on stderr; writes `points.csv`, the plots and `summary.md` into `opts.out`.
+pub fn run_all(opts: &StudyOptions, exe: &Path) -> anyhow::Result<()> {
+    let out = &opts.out;
+    std::fs::create_dir_all(out)?;
+    let (all, left_out): (Vec<_>, Vec<_>) =
+        opts.grid
+            .points()
+            .into_iter()
+            .partition(|p| match opts.max_particles {
+                Some(m) => p.estimated_particles() <= m,
+                None => true,
+            });
+    let mut results = Vec::new();
+    for (k, p) in all.iter().enumerate() {
+        let r = points::run_point(p, out, exe, opts.threads, opts.force)?;
+        eprintln!(
+            "[{}/{}] {}: error {:+.2} %, {:.1} s, {:.3e} particle-steps/s ({})",
+            k + 1,
+            all.len(),
+            p.id(),
+            100.0 * r.relative_error,
+            r.wall_time_s,
+            r.particle_steps_per_second,
+            r.status
+        );
+        results.push(r);
+    }
+    summary::write(out, &results, &opts.grid.variants())?;
+    if !left_out.is_empty() {
+        let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();
+        let mut f = std::fs::OpenOptions::new()
+            .append(true)
+            .open(out.join("summary.md"))?;
+        writeln!(
+            f,
+            "\n**Left out of this run** (`--max-particles {}`): {} point(s) — {}.",
+            opts.max_particles.unwrap_or(0),
+            left_out.len(),
+            ids.join(", ")
+        )?;
+    }
+    eprintln!("study: {}", out.join("summary.md").display());
+    Ok(())
+}

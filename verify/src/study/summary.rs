@@ -1,0 +1,234 @@
+//! The study's outputs: `points.csv`, per problem the plots of error against wall time and of
+//! convergence in l0, and `summary.md` with the tables and conclusions.
+
+use super::analysis::{convergence_order, pareto_front, words};
+use super::grid::{Problem, Variant};
+use super::points::PointResult;
+use crate::report::plot::{self, Plot, Series, SeriesKind};
+use crate::report::summary::sig;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Writes `points.csv`, the plots and `summary.md` into `out`.
+pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyhow::Result<()> {
+    crate::output::atomic_write(&out.join("points.csv"), &points_csv(results)?)?;
+    let mut md = String::new();
+    let _ = writeln!(md, "# Accuracy–cost study\n");
+    let _ = writeln!(
+        md,
+        "Each point is one run in its own process (wall time and peak memory are its own). Error = \
+         (value − reference)/reference: the cube drop's l = 4 period (damped-cosine fit of the shape \
+         moment Q4) against Lamb, the sessile matte drop's equilibrium height against the \
+         Young–Laplace solution. Data: `points.csv`. Variants are labelled `kernel h/l0 r_e/l0 \
+         density`.\n"
+    );
+    for problem in [Problem::CubeDrop, Problem::SessileDrop] {
+        let pts: Vec<&PointResult> = results
+            .iter()
+            .filter(|r| r.point.problem == problem)
+            .collect();
+        if !pts.is_empty() {
+            write_problem(&mut md, out, problem, &pts, variants)?;
+        }
+    }
+    crate::output::atomic_write(&out.join("summary.md"), md.as_bytes())?;
+    Ok(())
+}
+
+/// `points.csv`: one row per point.
+fn points_csv(results: &[PointResult]) -> anyhow::Result<Vec<u8>> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "problem",
+        "variant",
+        "kernel",
+        "h_over_l0",
+        "re_over_l0",
+        "density",
+        "resolution",
+        "l0_m",
+        "particles",
+        "value",
+        "reference",
+        "relative_error",
+        "wall_time_s",
+        "particle_steps_per_second",
+        "mean_neighbours",
+        "peak_memory_bytes",
+        "status",
+    ])?;
+    for r in results {
+        let v = &r.point.variant;
+        w.write_record([
+            r.point.problem.name().to_string(),
+            v.label(),
+            v.kernel.name().to_string(),
+            v.h_over_l0.to_string(),
+            v.re_over_l0.to_string(),
+            if v.continuity {
+                "continuity+shepard"
+            } else {
+                "summation"
+            }
+            .to_string(),
+            r.point.resolution.to_string(),
+            format!("{:e}", r.l0_m),
+            r.particles.to_string(),
+            format!("{:e}", r.value),
+            format!("{:e}", r.reference),
+            format!("{:e}", r.relative_error),
+            format!("{:.3}", r.wall_time_s),
+            format!("{:.4e}", r.particle_steps_per_second),
+            format!("{:.1}", r.mean_neighbours),
+            r.peak_memory_bytes
+                .map(|b| b.to_string())
+                .unwrap_or_default(),
+            r.status.clone(),
+        ])?;
+    }
+    Ok(w.into_inner()?)
+}
+
+/// The section of one problem in `summary.md` — its points, convergence orders and conclusions
+/// — and its two plots (error against wall time with the Pareto front, convergence in l0).
+fn write_problem(
+    md: &mut String,
+    out: &Path,
+    problem: Problem,
+    pts: &[&PointResult],
+    variants: &[Variant],
+) -> anyhow::Result<()> {
+    let front = pareto_front(pts);
+    let _ = writeln!(
+        md,
+        "## {} (reference {})\n",
+        problem.name(),
+        sig(pts[0].reference)
+    );
+    point_table(md, pts, &front);
+    let _ = writeln!(
+        md,
+        "\nConvergence order in l0 (least squares of ln|error| on ln l0):\n"
+    );
+    let _ = writeln!(md, "| variant | order | R² |");
+    let _ = writeln!(md, "|---|---|---|");
+    let mut order_series = Vec::new();
+    let mut scatter = Vec::new();
+    for (k, v) in variants.iter().enumerate() {
+        let vp: Vec<&PointResult> = pts
+            .iter()
+            .copied()
+            .filter(|r| r.point.variant == *v)
+            .collect();
+        match convergence_order(&vp) {
+            Some((p, r2)) => {
+                let _ = writeln!(md, "| {} | {p:.2} | {r2:.2} |", v.label());
+            }
+            None => {
+                let _ = writeln!(md, "| {} | — (fewer than 3 measured points) | |", v.label());
+            }
+        }
+        let finite: Vec<&PointResult> = vp
+            .into_iter()
+            .filter(|r| r.relative_error.is_finite() && r.relative_error != 0.0)
+            .collect();
+        order_series.push(log_series(v.label(), &finite, |r| r.l0_m, k));
+        scatter.push(Series {
+            kind: SeriesKind::Markers,
+            ..log_series(v.label(), &finite, |r| r.wall_time_s.max(1e-3), k)
+        });
+    }
+    let on_front: Vec<&PointResult> = front.iter().map(|&i| pts[i]).collect();
+    scatter.push(Series {
+        kind: SeriesKind::Line,
+        ..log_series(
+            "Pareto front".into(),
+            &on_front,
+            |r| r.wall_time_s.max(1e-3),
+            variants.len(),
+        )
+    });
+    let name = problem.name();
+    draw(
+        out,
+        format!("{name}: error against wall time (2 cores)"),
+        "log10(wall time [s])",
+        scatter,
+        &format!("{name}_error_vs_time"),
+    )?;
+    draw(
+        out,
+        format!("{name}: convergence in l0"),
+        "log10(l0 [m])",
+        order_series,
+        &format!("{name}_convergence"),
+    )?;
+    let _ = writeln!(md, "\n{}\n", words(pts, &front, variants));
+    let _ = writeln!(md, "Plots: [{name}_error_vs_time.png]({name}_error_vs_time.png), [{name}_convergence.png]({name}_convergence.png)\n");
+    Ok(())
+}
+
+/// The table of a problem's points: error, cost, and whether each is on the Pareto `front`.
+fn point_table(md: &mut String, pts: &[&PointResult], front: &[usize]) {
+    let _ = writeln!(md, "| variant | resolution | particles | error | wall time [s] | particle-steps/s | neighbours | memory [B/particle] | Pareto | status |");
+    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|---|");
+    for (i, r) in pts.iter().enumerate() {
+        let mem = r
+            .peak_memory_bytes
+            .map(|b| format!("{:.0}", b as f64 / r.particles.max(1) as f64))
+            .unwrap_or_else(|| "—".into());
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {:+.2} % | {:.1} | {:.3e} | {:.0} | {mem} | {} | {} |",
+            r.point.variant.label(),
+            r.point.resolution,
+            r.particles,
+            100.0 * r.relative_error,
+            r.wall_time_s,
+            r.particle_steps_per_second,
+            r.mean_neighbours,
+            if front.contains(&i) { "**yes**" } else { "" },
+            r.status
+        );
+    }
+}
+
+/// A line with markers through (log10 x(point), log10 |relative error|).
+fn log_series(
+    label: String,
+    pts: &[&PointResult],
+    x: impl Fn(&PointResult) -> f64,
+    color: usize,
+) -> Series {
+    Series {
+        label,
+        points: pts
+            .iter()
+            .map(|r| (x(r).log10(), r.relative_error.abs().log10()))
+            .collect(),
+        kind: SeriesKind::LineMarkers,
+        color,
+    }
+}
+
+/// Draws `series` against log10 |relative error| to `out/file` (PNG and SVG).
+fn draw(
+    out: &Path,
+    title: String,
+    x_label: &str,
+    series: Vec<Series>,
+    file: &str,
+) -> anyhow::Result<()> {
+    plot::draw(
+        &Plot {
+            title,
+            x_label: x_label.into(),
+            y_label: "log10(|relative error|)".into(),
+            series,
+            x_range: None,
+            y_range: None,
+            hlines: vec![],
+        },
+        &out.join(file),
+    )
+}

@@ -1,0 +1,74 @@
+//! A case's runs read back from their folders: whether a finished run can be reused, and its
+//! record, time series, probes and particle dumps.
+
+use super::snapshots::{snapshot_name, FINAL};
+use crate::output::run_info::{RunInfo, Status};
+use crate::output::timeseries::Table;
+use crate::suite::dump::Dump;
+use crate::suite::{RunData, RunSpec};
+use std::path::Path;
+
+/// Whether `dir` holds a finished run of exactly `spec`'s scene.
+pub(super) fn reusable(dir: &Path, spec: &RunSpec) -> bool {
+    RunInfo::read(dir).is_ok_and(|info| {
+        matches!(info.status, Status::Completed | Status::Failed)
+            && info.scene == spec.scene
+            && dir.join(FINAL).exists()
+    })
+}
+
+/// The wall particles of a scene as a dump (empty if it has none).
+fn wall_dump(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
+    if scene.walls.is_empty() {
+        return Ok(None);
+    }
+    let model = solver::Model::from_scene(scene)?;
+    let (p, _, _) = solver::setup::build_particles(scene, &model)?;
+    let n = p.n_wall();
+    Ok(Some(Dump {
+        time_s: 0.0,
+        pos: p.pos[p.n_fluid..].iter().map(|x| [x.x, x.y, x.z]).collect(),
+        vel: vec![[0.0; 3]; n],
+        phase: p.phase[p.n_fluid..].to_vec(),
+        wall: vec![true; n],
+    }))
+}
+
+/// Reads the run of `spec` back from its folder `dir`.
+pub(super) fn load_run(dir: &Path, spec: &RunSpec) -> anyhow::Result<RunData> {
+    let info = RunInfo::read(dir)?;
+    let timeseries = Table::read(&dir.join("timeseries.csv"))?;
+    let probes = if dir.join("probes.csv").exists() {
+        Table::read(&dir.join("probes.csv"))?
+    } else {
+        Table::default()
+    };
+    // walls never move: rebuilt from the scene rather than stored
+    let walls = wall_dump(&info.scene)?;
+    let with_walls = |mut d: Dump| {
+        if let Some(w) = &walls {
+            d.pos.extend_from_slice(&w.pos);
+            d.vel.extend_from_slice(&w.vel);
+            d.phase.extend_from_slice(&w.phase);
+            d.wall.extend_from_slice(&w.wall);
+        }
+        d
+    };
+    let last = with_walls(Dump::read(&dir.join(FINAL))?);
+    let mut snapshots = Vec::new();
+    for &t in &spec.snapshot_times_s {
+        let p = dir.join(snapshot_name(t));
+        if p.exists() {
+            snapshots.push((t, with_walls(Dump::read(&p)?)));
+        }
+    }
+    Ok(RunData {
+        id: spec.id.clone(),
+        dir: dir.to_path_buf(),
+        info,
+        timeseries,
+        probes,
+        last,
+        snapshots,
+    })
+}

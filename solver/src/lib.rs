@@ -6,9 +6,10 @@
 //! angles, never tuned coefficients. The equations are those of `physics.md` (the papers'
 //! printed equations, corrected); every implementing line cites its equation.
 //!
-//! The key design decision: effects are declared by the scene and compiled in or out of the
-//! pair loop by const generic flags ([`physics::forces`]), and the kernel is a type parameter
-//! ([`kernel::Kernel`]), so an absent effect costs nothing. All parallel work gathers per
+//! The key design decision: effects are declared by the scene, and each force term is a type
+//! ([`physics::forces::PairTerm`]) passed to one fused pair loop; a term the scene does not
+//! declare is the empty type [`physics::forces::Off`] and compiles away, and the kernel is a
+//! type parameter ([`kernel::Kernel`]), so an absent effect costs nothing. All parallel work gathers per
 //! particle in a fixed neighbour order, so results are bitwise identical for any thread count.
 //!
 //! ```no_run

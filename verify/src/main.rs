@@ -84,8 +84,8 @@ struct RunArgs {
     /// Write a checkpoint every M minutes of wall time.
     #[arg(long, value_name = "M", default_value = "10")]
     checkpoint_minutes: f64,
-    /// Write a particle snapshot (.vtu) every N outputs.
-    #[arg(long, value_name = "N")]
+    /// Write a particle snapshot (.vtu) every N outputs (N ≥ 1).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     vtk: Option<u32>,
     /// Worker threads (default: all cores).
     #[arg(long, value_name = "N")]

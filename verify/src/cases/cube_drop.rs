@@ -8,11 +8,11 @@
 //! less noisy period.
 
 use super::paper_values;
+use super::scene::SceneBuilder;
 use crate::analytic::lamb;
 use crate::measure::oscillation;
 use crate::report::plot::{self, Plot, Series, SeriesKind};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
-use solver::Scene;
 use std::path::Path;
 
 /// The case.
@@ -73,13 +73,13 @@ impl Case for CubeDrop {
         c2_values(f)
             .into_iter()
             .map(|c2| {
-                let mut scene =
-                    Scene::from_toml_str(SCENE).expect("scenes/cube_drop.toml is valid (tested)");
-                scene.discretisation.l0 = SIDE_M / n as f64;
-                scene.discretisation.sound_speed = c2.sqrt();
-                scene.time.end = if f == Fidelity::Smoke { 3.0e-3 } else { 5.0e-3 };
-                scene.time.output_interval = 1.0e-5;
-                scene.time.dt = (f == Fidelity::Paper).then_some(2.0e-7);
+                let end_s = if f == Fidelity::Smoke { 3.0e-3 } else { 5.0e-3 };
+                let scene = SceneBuilder::from_toml(SCENE)
+                    .l0(SIDE_M / n as f64)
+                    .sound_speed(c2.sqrt())
+                    .time(end_s, 1.0e-5)
+                    .fixed_dt((f == Fidelity::Paper).then_some(2.0e-7))
+                    .build();
                 RunSpec {
                     id: format!("c2_{c2:.0}"),
                     scene,

@@ -13,11 +13,12 @@
 //! radius R0 (the paper's text says radius; its Fig. 7 caption says diameter).
 
 use super::paper_values;
-use super::scenes::{self, LiquidProps, MATTE, SLAG};
+use super::scene::{LiquidProps, SceneBuilder, MATTE, SLAG};
 use crate::analytic::neumann::{self, Regime};
 use crate::measure::{geometry, oscillation, surface};
 use crate::report::plot::{self, Plot, Series, SeriesKind};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
+use solver::scene::BodyShape;
 use std::path::Path;
 
 /// Which of the two paper sections.
@@ -37,10 +38,7 @@ const R0_M: f64 = 1.0e-3;
 impl Doublet {
     fn liquids(&self) -> (LiquidProps, LiquidProps) {
         match self.0 {
-            Pair::Equal => (
-                ("matte1", MATTE.1, MATTE.2, MATTE.3),
-                ("matte2", MATTE.1, MATTE.2, MATTE.3),
-            ),
+            Pair::Equal => (MATTE.named("matte1"), MATTE.named("matte2")),
             Pair::MatteSlag => (MATTE, SLAG),
         }
     }
@@ -72,31 +70,22 @@ impl Doublet {
 
     fn scene(&self, f: Fidelity, sigma12: f64) -> solver::Scene {
         let (a, b) = self.liquids();
-        let l0 = Self::l0(f);
         // c² = 150 m²/s² as in the paper (§2.3); the cohesive compression stays below 1 %
         // for matte down to l0 = 0.06 mm (σ/(l0 ρ c²) · 1.75 = 1.7 % at the paper's l0)
-        let dt = (f == Fidelity::Paper).then_some(1.0e-6);
-        let mut text = scenes::header(
-            l0,
-            150f64.sqrt(),
-            Self::end(f),
-            1.0e-4,
-            dt,
-            false,
-            "binary droplet",
-        );
-        text += &scenes::liquid(a);
-        text += &scenes::liquid(b);
-        text += &format!(
-            "[[interface]]\nliquids = [\"{}\", \"{}\"]\ntension = {sigma12:e}\n",
-            a.0, b.0
-        );
-        for (name, liq, x) in [("drop1", a.0, -R0_M), ("drop2", b.0, R0_M)] {
-            text += &format!(
-                "[[body]]\nname = \"{name}\"\nliquid = \"{liq}\"\nshape = {{ kind = \"sphere\", center = [{x:e}, 0.0, 0.0], radius = {R0_M:e} }}\n"
-            );
-        }
-        scenes::parse(&text)
+        let sphere = |x: f64| BodyShape::Sphere {
+            center: [x, 0.0, 0.0],
+            radius: R0_M,
+        };
+        SceneBuilder::new(Self::l0(f), 150f64.sqrt())
+            .time(Self::end(f), 1.0e-4)
+            .fixed_dt((f == Fidelity::Paper).then_some(1.0e-6))
+            .paper_effects()
+            .liquid(&a)
+            .liquid(&b)
+            .interface(a.name, b.name, sigma12)
+            .body("drop1", a.name, sphere(-R0_M))
+            .body("drop2", b.name, sphere(R0_M))
+            .build()
     }
 }
 
@@ -228,7 +217,7 @@ impl Case for Doublet {
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
         let (a, b) = self.liquids();
-        let (s1, s2) = (a.3, b.3);
+        let (s1, s2) = (a.surface_tension_n_m, b.surface_tension_n_m);
         let v0 = 4.0 / 3.0 * std::f64::consts::PI * R0_M.powi(3);
         let l0 = Self::l0(f);
         let mut metrics = Vec::new();
@@ -248,7 +237,7 @@ impl Case for Doublet {
         };
         for (k, run) in runs.iter().enumerate() {
             let s12 = run.info.scene.interfaces[0].tension;
-            let (t, g) = g1g2_series(run, a.0, b.0);
+            let (t, g) = g1g2_series(run, a.name, b.name);
             if g.is_empty() {
                 continue;
             }

@@ -5,7 +5,7 @@
 //! transient beyond what the equation of state can give back, compression stays bounded, and a
 //! drop at rest stays one body without clumping.
 
-use super::scenes;
+use super::scene::SceneBuilder;
 use crate::measure::invariants;
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
 use std::path::Path;
@@ -108,16 +108,15 @@ impl Case for HardCases {
         SCENES
             .iter()
             .map(|&(id, text, l0_factor, end_factor, _)| {
-                let mut s = scenes::parse(text);
-                match f {
-                    Fidelity::Smoke => {
-                        s.discretisation.l0 *= l0_factor;
-                        s.time.end *= end_factor;
-                    }
-                    Fidelity::Standard => {}
-                    Fidelity::Paper => s.discretisation.l0 /= 1.5,
-                }
-                s.time.output_interval = s.time.output_interval.min(s.time.end / 20.0);
+                let base = SceneBuilder::from_toml(text);
+                let (l0, end) = (base.scene().discretisation.l0, base.scene().time.end);
+                let (l0, end) = match f {
+                    Fidelity::Smoke => (l0 * l0_factor, end * end_factor),
+                    Fidelity::Standard => (l0, end),
+                    Fidelity::Paper => (l0 / 1.5, end),
+                };
+                let output_interval = base.scene().time.output_interval.min(end / 20.0);
+                let s = base.l0(l0).time(end, output_interval).build();
                 RunSpec {
                     id: id.into(),
                     scene: s,

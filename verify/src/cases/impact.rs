@@ -11,9 +11,11 @@
 //! angle and the height while it oscillates.
 
 use super::paper_values;
-use super::substrate::{self, DropScene, ALUMINIUM, G_M_S2, IRON, WATER};
+use super::scene::LiquidProps;
+use super::substrate::{self, FallingDrop, ALUMINIUM, G_M_S2, IRON, WATER};
 use crate::analytic::young_laplace;
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
+use solver::scene::{Setting, WallBoundary, WallShape};
 use solver::Simulation;
 use std::path::Path;
 
@@ -32,9 +34,9 @@ pub enum Drop {
 pub struct Impact(pub Drop);
 
 struct Spec {
-    liquid: super::scenes::LiquidProps,
+    liquid: LiquidProps,
     /// (run id, solid, θ [deg], setting)
-    substrates: Vec<(&'static str, &'static str, f64, &'static str)>,
+    substrates: Vec<(&'static str, &'static str, f64, Setting)>,
     diameter_m: f64,
     fall_m: f64,
     /// Paper B's spacing d [m].
@@ -52,9 +54,9 @@ impl Impact {
             Drop::Water => Spec {
                 liquid: WATER,
                 substrates: vec![
-                    ("glass_30", "glass", 30.0, "natsui2021"),
-                    ("teflon_90", "teflon", 90.0, "natsui2021"),
-                    ("glass_30_natsui2016", "glass", 30.0, "natsui2016"),
+                    ("glass_30", "glass", 30.0, Setting::Natsui2021),
+                    ("teflon_90", "teflon", 90.0, Setting::Natsui2021),
+                    ("glass_30_natsui2016", "glass", 30.0, Setting::Natsui2016),
                 ],
                 diameter_m: 2.0e-3,
                 fall_m: 2.0e-3,
@@ -66,8 +68,8 @@ impl Impact {
             },
             Drop::Aluminium => Spec {
                 liquid: ALUMINIUM,
-                substrates: vec![("alumina_90", "alumina", 90.0, "natsui2021")],
-                diameter_m: substrate::diameter_of_mass(70e-6, ALUMINIUM.1),
+                substrates: vec![("alumina_90", "alumina", 90.0, Setting::Natsui2021)],
+                diameter_m: substrate::diameter_of_mass(70e-6, ALUMINIUM.density_kg_m3),
                 fall_m: 4.0e-3,
                 l0_paper_m: 2.0e-4,
                 end_s: 0.12,
@@ -76,7 +78,7 @@ impl Impact {
             },
             Drop::Iron => Spec {
                 liquid: IRON,
-                substrates: vec![("alumina_125", "alumina", 125.0, "natsui2021")],
+                substrates: vec![("alumina_125", "alumina", 125.0, Setting::Natsui2021)],
                 diameter_m: 5.0e-3,
                 fall_m: 5.0e-3,
                 l0_paper_m: 2.0e-4,
@@ -160,28 +162,31 @@ impl Case for Impact {
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
         let s = self.spec();
         let l0 = self.l0(f);
+        let drop = FallingDrop {
+            liquid: s.liquid,
+            diameter_m: s.diameter_m,
+            fall_m: s.fall_m,
+        };
         s.substrates
             .iter()
             .map(|&(id, solid, theta, setting)| {
-                let scene = DropScene {
-                    setting,
-                    liquid: s.liquid,
-                    solid: (solid, theta),
-                    diameter_m: s.diameter_m,
-                    fall_m: s.fall_m,
-                    l0_m: l0,
-                    end_s: self.end(f),
-                    output_interval_s: self.output_interval(f),
-                    gravity_m_s2: [0.0, 0.0, -G_M_S2],
-                    plate: format!(
-                        "{{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {:e} }}",
-                        s.plate_radius_m
-                    ),
-                    boundary: "free_slip",
-                };
+                let scene = drop
+                    .scene(setting, l0, solid, theta)
+                    .time(self.end(f), self.output_interval(f))
+                    .gravity([0.0, 0.0, -G_M_S2])
+                    .wall(
+                        "plate",
+                        solid,
+                        WallShape::Disk {
+                            center: [0.0; 3],
+                            radius: s.plate_radius_m,
+                        },
+                        WallBoundary::FreeSlip,
+                    )
+                    .build();
                 RunSpec {
                     id: id.into(),
-                    scene: super::scenes::parse(&scene.toml(self.title())),
+                    scene,
                     snapshot_times_s: self.snapshot_times(f),
                 }
             })
@@ -193,11 +198,15 @@ impl Case for Impact {
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
         let s = self.spec();
         let l0 = self.l0(f);
-        let (name, rho, _, sigma) = s.liquid;
+        let LiquidProps {
+            name,
+            density_kg_m3: rho,
+            surface_tension_n_m: sigma,
+            ..
+        } = s.liquid;
         let mut metrics = Vec::new();
         for run in runs {
-            let Some(&(_, solid, theta, setting)) = s.substrates.iter().find(|x| x.0 == run.id)
-            else {
+            let Some(&(_, solid, theta, _)) = s.substrates.iter().find(|x| x.0 == run.id) else {
                 continue;
             };
             let t = substrate::column(run, "time_s");
@@ -256,7 +265,7 @@ impl Case for Impact {
                     .run(run)
                     .note(format!("{tail}; radius of the disc with the first liquid layer's area")),
             );
-            metrics.push(substrate::inside_plate_metric(self.name(), run, setting));
+            metrics.push(substrate::inside_plate_metric(self.name(), run));
             let r_max = radius
                 .iter()
                 .copied()

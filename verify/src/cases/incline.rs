@@ -12,8 +12,9 @@
 //! and underestimated — so nothing here has a reference value; the report shows the side and
 //! bird's-eye views.
 
-use super::substrate::{self, DropScene, G_M_S2, WATER};
+use super::substrate::{self, FallingDrop, G_M_S2, WATER};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use solver::scene::{Setting, WallBoundary, WallShape};
 use solver::Simulation;
 use std::path::Path;
 
@@ -85,30 +86,32 @@ impl Case for Incline {
         SUBSTRATES
             .iter()
             .map(|&(id, solid, theta)| {
-                let scene = DropScene {
-                    setting: "natsui2021",
+                let drop = FallingDrop {
                     liquid: WATER,
-                    solid: (solid, theta),
                     diameter_m: DIAMETER_M,
                     fall_m: 0.0,
-                    l0_m: l0(f),
-                    end_s: end(f),
-                    output_interval_s: if f == Fidelity::Smoke { 2.0e-4 } else { 5.0e-4 },
-                    // tilted gravity: the plate's downhill direction is +x
-                    gravity_m_s2: [G_M_S2 * a.sin(), 0.0, -G_M_S2 * a.cos()],
-                    plate: format!(
-                        "{{ kind = \"plate\", min = [{:e}, {:e}], max = [{:e}, {:e}], top = 0.0 }}",
-                        PLATE_X_MIN_M,
-                        -PLATE_HALF_WIDTH_M,
-                        plate_x_max(f),
-                        PLATE_HALF_WIDTH_M
-                    ),
-                    // a free-slip plate would let the drop slide like a frictionless block
-                    boundary: "no_slip",
                 };
+                let out_s = if f == Fidelity::Smoke { 2.0e-4 } else { 5.0e-4 };
+                let scene = drop
+                    .scene(Setting::Natsui2021, l0(f), solid, theta)
+                    .time(end(f), out_s)
+                    // tilted gravity: the plate's downhill direction is +x
+                    .gravity([G_M_S2 * a.sin(), 0.0, -G_M_S2 * a.cos()])
+                    .wall(
+                        "plate",
+                        solid,
+                        WallShape::Plate {
+                            min: [PLATE_X_MIN_M, -PLATE_HALF_WIDTH_M],
+                            max: [plate_x_max(f), PLATE_HALF_WIDTH_M],
+                            top: 0.0,
+                        },
+                        // a free-slip plate would let the drop slide like a frictionless block
+                        WallBoundary::NoSlip,
+                    )
+                    .build();
                 RunSpec {
                     id: id.into(),
-                    scene: super::scenes::parse(&scene.toml(self.title())),
+                    scene,
                     snapshot_times_s: if f == Fidelity::Smoke {
                         vec![]
                     } else {
@@ -214,11 +217,7 @@ impl Case for Incline {
                     G_M_S2 * INCLINE_DEG.to_radians().sin()
                 )),
             );
-            metrics.push(substrate::inside_plate_metric(
-                self.name(),
-                run,
-                "natsui2021",
-            ));
+            metrics.push(substrate::inside_plate_metric(self.name(), run));
             substrate::draw_history(
                 &t,
                 &[(&adv, "advancing (downhill)"), (&rec, "receding (uphill)")],

@@ -7,7 +7,7 @@ mod impact;
 mod incline;
 pub mod paper_values;
 mod plate_eq23;
-pub mod scenes;
+pub mod scene;
 pub mod substrate;
 mod water_oil_teflon;
 

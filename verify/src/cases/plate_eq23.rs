@@ -8,11 +8,12 @@
 //! plate, and θ12 where a line exists. The analytic θ12 maps of Fig. 3(a)/(b) are drawn with the
 //! simulated points on them.
 
-use super::scenes::{self, LiquidProps, MATTE, SLAG};
+use super::scene::{LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};
 use crate::analytic::eq23::{self, SolidContact};
 use crate::measure::{geometry, surface};
 use crate::report::plot::{self, Heatmap, ParticleView, Plot, Series, SeriesKind};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
+use solver::scene::{BodyShape, Cut, WallBoundary, WallShape};
 use std::path::Path;
 
 /// The case.
@@ -28,8 +29,8 @@ const END_S: f64 = 0.032;
 fn systems(f: Fidelity) -> Vec<(&'static str, LiquidProps, LiquidProps, Vec<f64>)> {
     let identical = (
         "identical",
-        ("matte1", MATTE.1, MATTE.2, MATTE.3),
-        ("matte2", MATTE.1, MATTE.2, MATTE.3),
+        MATTE.named("matte1"),
+        MATTE.named("matte2"),
         if f == Fidelity::Smoke {
             vec![90.0]
         } else {
@@ -53,32 +54,38 @@ fn l0(f: Fidelity) -> f64 {
 }
 
 fn scene(f: Fidelity, a: LiquidProps, b: LiquidProps, theta23: f64) -> solver::Scene {
-    let l0 = l0(f);
     let end = if f == Fidelity::Smoke { 0.012 } else { END_S };
-    let dt = (f == Fidelity::Paper).then_some(1.0e-6);
-    let mut t = scenes::header(
-        l0,
-        150f64.sqrt(),
-        end,
-        2.0e-4,
-        dt,
-        true,
-        "binary droplet on a plate",
-    );
-    t += &scenes::liquid(a);
-    t += &scenes::liquid(b);
-    t += &format!(
-        "[[interface]]\nliquids = [\"{}\", \"{}\"]\ntension = {SIGMA12:e}\n",
-        a.0, b.0
-    );
-    t += &format!("[[solid]]\nname = \"plate\"\ncontact_angles = {{ {} = {THETA31_DEG:e}, {} = {theta23:e} }}\n", a.0, b.0);
-    t += &format!(
-        "[[body]]\nname = \"drop\"\nshape = {{ kind = \"sphere\", center = [0.0, 0.0, {R_M:e}], radius = {R_M:e} }}\n\
-         cut = {{ point = [0.0, 0.0, 0.0], normal = [1.0, 0.0, 0.0], liquids = [\"{}\", \"{}\"] }}\n",
-        a.0, b.0
-    );
-    t += &format!("[[wall]]\nname = \"plate\"\nsolid = \"plate\"\nshape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {PLATE_RADIUS_M:e} }}\n");
-    scenes::parse(&t)
+    SceneBuilder::new(l0(f), 150f64.sqrt())
+        .time(end, 2.0e-4)
+        .fixed_dt((f == Fidelity::Paper).then_some(1.0e-6))
+        .paper_effects()
+        .gravity(GRAVITY_M_S2)
+        .liquid(&a)
+        .liquid(&b)
+        .interface(a.name, b.name, SIGMA12)
+        .solid("plate", &[(a.name, THETA31_DEG), (b.name, theta23)])
+        .cut_body(
+            "drop",
+            BodyShape::Sphere {
+                center: [0.0, 0.0, R_M],
+                radius: R_M,
+            },
+            Cut {
+                point: [0.0; 3],
+                normal: [1.0, 0.0, 0.0],
+                liquids: [a.name.into(), b.name.into()],
+            },
+        )
+        .wall(
+            "plate",
+            "plate",
+            WallShape::Disk {
+                center: [0.0; 3],
+                radius: PLATE_RADIUS_M,
+            },
+            WallBoundary::FreeSlip,
+        )
+        .build()
 }
 
 /// What touches the plate, in words.

@@ -24,90 +24,80 @@
 //! l0))` it has there, which saves 20–32 ms of simulated fall. Times are counted from that
 //! start, within `l0/v` (0.3–0.6 ms) of the impact.
 
-use super::scenes::{self, LiquidProps};
+use super::scene::{sound_speed_for, LiquidProps, SceneBuilder};
 use crate::measure::{geometry, side_view, surface};
 use crate::report::plot::{self, ParticleView, Plot, Series, SeriesKind};
 use crate::suite::dump::Dump;
 use crate::suite::{Metric, RunData, Tolerance};
+use solver::scene::{BodyShape, Setting};
 use solver::Simulation;
 use std::path::Path;
 
 /// Gravity [m/s²] (R17 of physics.md uses 9.81).
 pub const G_M_S2: f64 = 9.81;
 /// Water at 298 K (paper B Table 1; μ 0.89 mPa·s, the printed 0.089 corrected, physics.md).
-pub const WATER: LiquidProps = ("water", 997.0, 0.89e-3, 0.073);
+pub const WATER: LiquidProps = LiquidProps {
+    name: "water",
+    density_kg_m3: 997.0,
+    viscosity_pa_s: 0.89e-3,
+    surface_tension_n_m: 0.073,
+};
 /// Aluminium at 1373 K (paper B Table 1).
-pub const ALUMINIUM: LiquidProps = ("aluminium", 2240.0, 2.56e-3, 0.900);
+pub const ALUMINIUM: LiquidProps = LiquidProps {
+    name: "aluminium",
+    density_kg_m3: 2240.0,
+    viscosity_pa_s: 2.56e-3,
+    surface_tension_n_m: 0.900,
+};
 /// Iron at 1873 K (paper B Table 1).
-pub const IRON: LiquidProps = ("iron", 7020.0, 4.8e-3, 1.800);
+pub const IRON: LiquidProps = LiquidProps {
+    name: "iron",
+    density_kg_m3: 7020.0,
+    viscosity_pa_s: 4.8e-3,
+    surface_tension_n_m: 1.800,
+};
 /// The plate's top surface is the plane z = 0 in every scene.
 pub const WALL_Z_M: f64 = 0.0;
 
-/// A drop above a plate.
-pub struct DropScene<'a> {
-    /// `discretisation.setting`: "natsui2021" or "natsui2016".
-    pub setting: &'a str,
+/// The drop of paper B's scenes: a sphere whose bottom starts one spacing above the plate's top
+/// (z = 0), moving down at the speed a free fall from its release height gives it there.
+#[derive(Clone, Copy, Debug)]
+pub struct FallingDrop {
     /// The liquid.
     pub liquid: LiquidProps,
-    /// The solid's name and the liquid's equilibrium contact angle on it [deg].
-    pub solid: (&'a str, f64),
     /// Drop diameter [m].
     pub diameter_m: f64,
     /// Fall height: gap between the drop's bottom and the plate at release [m] (0: at rest on
     /// the plate, one spacing above it).
     pub fall_m: f64,
-    /// Spacing [m].
-    pub l0_m: f64,
-    /// End time [s] and output interval [s].
-    pub end_s: f64,
-    /// Interval between outputs (and probe rows) [s].
-    pub output_interval_s: f64,
-    /// Gravity vector [m/s²].
-    pub gravity_m_s2: [f64; 3],
-    /// The plate (a TOML wall shape).
-    pub plate: String,
-    /// `no_slip` or `free_slip`.
-    pub boundary: &'a str,
 }
 
-impl DropScene<'_> {
-    /// Start speed [m/s] (downwards) after free fall to one spacing above the plate.
-    pub fn impact_speed_m_s(&self) -> f64 {
-        (2.0 * G_M_S2 * (self.fall_m - self.l0_m).max(0.0)).sqrt()
+impl FallingDrop {
+    /// Start speed [m/s] (downwards) after free fall to one spacing `l0_m` [m] above the plate.
+    pub fn impact_speed_m_s(&self, l0_m: f64) -> f64 {
+        (2.0 * G_M_S2 * (self.fall_m - l0_m).max(0.0)).sqrt()
     }
 
-    /// The scene as TOML.
-    pub fn toml(&self, what: &str) -> String {
-        let (l, (solid, theta)) = (self.liquid, self.solid);
+    /// The drop above a plate of `solid`, on which the liquid's contact angle is `theta_deg`
+    /// [deg], at spacing `l0_m` [m] in a paper's `setting`, with the sound speed for the liquid
+    /// and the papers' effects; the caller adds the time control, gravity and the plate.
+    pub fn scene(&self, setting: Setting, l0_m: f64, solid: &str, theta_deg: f64) -> SceneBuilder {
+        let l = &self.liquid;
         let r = 0.5 * self.diameter_m;
-        let c = scenes::sound_speed_for(l.3, l.1, self.l0_m, 5.0);
-        let g = self.gravity_m_s2;
-        let v = self.impact_speed_m_s();
-        format!(
-            "# {what}\n[discretisation]\nsetting = \"{setting}\"\nl0 = {l0:e}\nsound_speed = {c:e}\n\
-             [time]\nend = {end:e}\noutput_interval = {out:e}\n\
-             [effects]\ninterfacial_tension = true\nlaminar_viscosity = true\n\
-             artificial_viscosity = {{ alpha1 = 0.01, alpha2 = 0.01 }}\n\
-             gravity = [{:e}, {:e}, {:e}]\n{liquid}\
-             [[solid]]\nname = \"{solid}\"\ncontact_angles = {{ {name} = {theta:e} }}\n\
-             [[body]]\nname = \"drop\"\nliquid = \"{name}\"\n\
-             shape = {{ kind = \"sphere\", center = [0.0, 0.0, {zc:e}], radius = {r:e} }}\n\
-             velocity = [0.0, 0.0, {vz:e}]\n\
-             [[wall]]\nname = \"plate\"\nsolid = \"{solid}\"\nshape = {plate}\nboundary = \"{boundary}\"\n",
-            g[0],
-            g[1],
-            g[2],
-            setting = self.setting,
-            l0 = self.l0_m,
-            end = self.end_s,
-            out = self.output_interval_s,
-            liquid = scenes::liquid(l),
-            name = l.0,
-            zc = r + self.l0_m,
-            vz = -v,
-            plate = self.plate,
-            boundary = self.boundary,
-        )
+        SceneBuilder::new(l0_m, sound_speed_for(l, l0_m, 5.0))
+            .setting(setting)
+            .paper_effects()
+            .liquid(l)
+            .solid(solid, &[(l.name, theta_deg)])
+            .moving_body(
+                "drop",
+                l.name,
+                BodyShape::Sphere {
+                    center: [0.0, 0.0, r + l0_m],
+                    radius: r,
+                },
+                [0.0, 0.0, -self.impact_speed_m_s(l0_m)],
+            )
     }
 }
 
@@ -182,8 +172,17 @@ pub fn column(run: &RunData, name: &str) -> Vec<f64> {
     run.probes.column(name).unwrap_or_default()
 }
 
+/// A setting's name as scene files write it (`natsui2021`).
+fn setting_name(setting: Setting) -> String {
+    serde_json::to_value(setting)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_string))
+        .unwrap_or_default()
+}
+
 /// The most liquid particles inside the plate at any output, judged against none.
-pub fn inside_plate_metric(case: &str, run: &RunData, setting: &str) -> Metric {
+pub fn inside_plate_metric(case: &str, run: &RunData) -> Metric {
+    let setting = setting_name(run.info.scene.discretisation.setting);
     let worst = column(run, "inside_plate").into_iter().fold(0.0, f64::max);
     Metric::new(
         case,
@@ -335,13 +334,14 @@ pub fn draw_view(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use solver::scene::{WallBoundary, WallShape};
 
     #[test]
     fn seventy_milligrams_of_aluminium_is_a_3_9_mm_drop() {
         // the sphere of that diameter holds the mass back, and paper B's rounded 3.92 mm is
         // within its last digit
-        let d = diameter_of_mass(70e-6, ALUMINIUM.1);
-        let mass = ALUMINIUM.1 * std::f64::consts::PI / 6.0 * d.powi(3);
+        let d = diameter_of_mass(70e-6, ALUMINIUM.density_kg_m3);
+        let mass = ALUMINIUM.density_kg_m3 * std::f64::consts::PI / 6.0 * d.powi(3);
         assert!((mass - 70e-6).abs() < 1e-15, "{mass}");
         assert!((d - 3.92e-3).abs() < 0.015e-3, "{d}");
     }
@@ -364,40 +364,45 @@ mod tests {
 
     #[test]
     fn impact_speed_is_free_fall_to_one_spacing() {
-        let s = DropScene {
-            setting: "natsui2016",
-            liquid: WATER,
-            solid: ("glass", 30.0),
-            diameter_m: 2e-3,
-            fall_m: 2e-3,
-            l0_m: 1e-4,
-            end_s: 1e-3,
-            output_interval_s: 1e-4,
-            gravity_m_s2: [0.0, 0.0, -G_M_S2],
-            plate: "{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = 3.0e-3 }".into(),
-            boundary: "free_slip",
-        };
-        let scene = scenes::parse(&s.toml("test"));
+        let (drop, l0) = (
+            FallingDrop {
+                liquid: WATER,
+                diameter_m: 2e-3,
+                fall_m: 2e-3,
+            },
+            1e-4,
+        );
+        let scene = drop
+            .scene(Setting::Natsui2016, l0, "glass", 30.0)
+            .time(1e-3, 1e-4)
+            .gravity([0.0, 0.0, -G_M_S2])
+            .wall(
+                "plate",
+                "glass",
+                WallShape::Disk {
+                    center: [0.0; 3],
+                    radius: 3.0e-3,
+                },
+                WallBoundary::FreeSlip,
+            )
+            .build();
         // the drop's bottom is one spacing above the plate (z = 0) …
         let body = &scene.bodies[0];
         let solver::scene::BodyShape::Sphere { center, radius } = body.shape else {
             panic!("a sphere");
         };
         let gap = center[2] - radius;
-        assert!((gap - s.l0_m).abs() < 1e-15, "gap {gap}");
+        assert!((gap - l0).abs() < 1e-15, "gap {gap}");
         // … moving down with the energy of a fall from H to there: ½v² = |g| (H − gap)
         let g = scene.effects.gravity.unwrap();
         let g_abs = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
         let v = body.velocity;
         assert!(v[0] == 0.0 && v[1] == 0.0 && v[2] < 0.0);
-        let energy = 0.5 * v[2] * v[2] - g_abs * (s.fall_m - gap);
+        let energy = 0.5 * v[2] * v[2] - g_abs * (drop.fall_m - gap);
         assert!(energy.abs() < 1e-12, "{energy}");
         // paper B's setting
         assert_eq!(scene.discretisation.h_over_l0, 2.0);
         assert_eq!(scene.discretisation.re_over_l0, 4.0);
-        assert_eq!(
-            scene.walls[0].boundary,
-            solver::scene::WallBoundary::FreeSlip
-        );
+        assert_eq!(scene.walls[0].boundary, WallBoundary::FreeSlip);
     }
 }

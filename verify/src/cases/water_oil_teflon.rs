@@ -11,20 +11,31 @@
 //! (a typical silicone oil) is assumed.
 
 use super::paper_values;
-use super::scenes::{self, LiquidProps};
+use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, GRAVITY_M_S2};
 use crate::analytic::eq23::{self, SolidContact};
 use crate::measure::{geometry, surface};
 use crate::report::plot::{self, ParticleView};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
+use solver::scene::{BodyShape, WallBoundary, WallShape};
 use std::path::Path;
 
 /// The case.
 pub struct WaterOilTeflon;
 
-const WATER: LiquidProps = ("water", 997.0, 1.5e-3, 0.0728);
+const WATER: LiquidProps = LiquidProps {
+    name: "water",
+    density_kg_m3: 997.0,
+    viscosity_pa_s: 1.5e-3,
+    surface_tension_n_m: 0.0728,
+};
 /// Oil viscosity used [Pa·s] (the paper's is 9.35 Pa·s; see the module doc).
 const OIL_MU: f64 = 0.05;
-const OIL: LiquidProps = ("oil", 970.0, OIL_MU, 0.0201);
+const OIL: LiquidProps = LiquidProps {
+    name: "oil",
+    density_kg_m3: 970.0,
+    viscosity_pa_s: OIL_MU,
+    surface_tension_n_m: 0.0201,
+};
 const SIGMA_WO: f64 = 0.052;
 const THETA_W: f64 = 108.9;
 const THETA_O: f64 = 16.4;
@@ -77,20 +88,34 @@ impl Case for WaterOilTeflon {
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
         let l0 = l0(f);
         let r = (3.0 * VOLUME_M3 / (4.0 * std::f64::consts::PI)).cbrt();
-        let c = scenes::sound_speed_for(WATER.3, WATER.1, l0, 5.0);
-        let mut t = scenes::header(l0, c, end(f), 2.0e-3, None, true, "water and oil on Teflon");
-        t += &scenes::liquid(WATER);
-        t += &scenes::liquid(OIL);
-        t += &format!("[[interface]]\nliquids = [\"water\", \"oil\"]\ntension = {SIGMA_WO:e}\n");
-        t += &format!("[[solid]]\nname = \"teflon\"\ncontact_angles = {{ water = {THETA_W:e}, oil = {THETA_O:e} }}\n");
-        t += &format!("[[body]]\nname = \"water\"\nliquid = \"water\"\nshape = {{ kind = \"sphere\", center = [0.0, 0.0, {r:e}], radius = {r:e} }}\n");
-        // the oil drop sits on top of the water drop, one spacing above it
-        let zo = 3.0 * r + l0;
-        t += &format!("[[body]]\nname = \"oil\"\nliquid = \"oil\"\nshape = {{ kind = \"sphere\", center = [0.0, 0.0, {zo:e}], radius = {r:e} }}\n");
-        t += &format!("[[wall]]\nname = \"plate\"\nsolid = \"teflon\"\nshape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {PLATE_RADIUS_M:e} }}\n");
+        let sphere = |z: f64| BodyShape::Sphere {
+            center: [0.0, 0.0, z],
+            radius: r,
+        };
+        let scene = SceneBuilder::new(l0, sound_speed_for(&WATER, l0, 5.0))
+            .time(end(f), 2.0e-3)
+            .paper_effects()
+            .gravity(GRAVITY_M_S2)
+            .liquid(&WATER)
+            .liquid(&OIL)
+            .interface(WATER.name, OIL.name, SIGMA_WO)
+            .solid("teflon", &[(WATER.name, THETA_W), (OIL.name, THETA_O)])
+            .body("water", WATER.name, sphere(r))
+            // the oil drop sits on top of the water drop, one spacing above it
+            .body("oil", OIL.name, sphere(3.0 * r + l0))
+            .wall(
+                "plate",
+                "teflon",
+                WallShape::Disk {
+                    center: [0.0; 3],
+                    radius: PLATE_RADIUS_M,
+                },
+                WallBoundary::FreeSlip,
+            )
+            .build();
         vec![RunSpec {
             id: "water_oil".into(),
-            scene: scenes::parse(&t),
+            scene,
             snapshot_times_s: vec![],
         }]
     }
@@ -100,8 +125,14 @@ impl Case for WaterOilTeflon {
         let Some(run) = runs.first() else {
             return Ok(metrics);
         };
-        let expected = eq23::solid_contact(WATER.3, OIL.3, SIGMA_WO, THETA_W, THETA_O)
-            .map_err(anyhow::Error::msg)?;
+        let expected = eq23::solid_contact(
+            WATER.surface_tension_n_m,
+            OIL.surface_tension_n_m,
+            SIGMA_WO,
+            THETA_W,
+            THETA_O,
+        )
+        .map_err(anyhow::Error::msg)?;
         let cloud = run.last.cloud(l0);
         let classes = surface::classify(&cloud);
         let status = run.status_note();

@@ -1,5 +1,6 @@
 //! The paper checks, one module each.
 
+mod analysis;
 mod cube_drop;
 mod doublet;
 mod hard_cases;

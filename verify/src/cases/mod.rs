@@ -10,6 +10,7 @@ pub mod paper_values;
 mod plate_eq23;
 pub mod scene;
 pub mod substrate;
+mod views;
 mod water_oil_teflon;
 
 use crate::suite::Case;

@@ -12,6 +12,7 @@
 
 use super::analysis::{self, Analysis};
 use super::paper_values;
+use super::plate_eq23::triple_line_tolerance;
 use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, GRAVITY_M_S2};
 use super::views;
 use crate::analytic::eq23::{self, SolidContact};
@@ -186,7 +187,7 @@ impl Analysis for WaterOilTeflon {
         {
             metrics.push(
                 Metric::new(self.name(), "θ12 water/oil/Teflon", "deg", value(theta12))
-                    .against(theta12_deg, Tolerance { abs: 5.4, source: "twice the fit's own error on voxelised tilted interfaces at R/l0 = 8 (2.7°, measure::geometry tests)".into() })
+                    .against(theta12_deg, triple_line_tolerance())
                     .paper(paper_values::number("water_oil_teflon", "theta12_deg"))
                     .run(run)
                     .note(match theta12 { Ok(_) => format!("{status}water–oil interface fitted in a band above the plate; angle inside the water"), Err(e) => format!("{status}not measurable: {e}") }),
@@ -195,7 +196,7 @@ impl Analysis for WaterOilTeflon {
         let paper_oil = paper_values::number("water_oil_teflon", "oil_contact_angle_deg");
         metrics.push(
             Metric::new(self.name(), "oil contact angle on Teflon", "deg", value(&m.oil_angle_deg))
-                .against(THETA_O, Tolerance { abs: paper_oil.map_or(8.0, |p| (p - THETA_O).abs()), source: "the paper's own miss (24.0° for 16.4°): a film a few particles thick resolves the angle no better".into() })
+                .against(THETA_O, Tolerance::absolute(paper_oil.map_or(8.0, |p| (p - THETA_O).abs()), "the paper's own miss (24.0° for 16.4°): a film a few particles thick resolves the angle no better"))
                 .paper(paper_oil)
                 .run(run)
                 .note(match &m.oil_angle_deg { Ok(_) => format!("{status}sphere fit to the oil's free surface in a band above the plate"), Err(e) => format!("{status}not measurable: {e}") }),

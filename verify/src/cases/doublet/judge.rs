@@ -59,8 +59,7 @@ impl Judge<'_> {
             // σ12 ≥ σ1 + σ2 (Eq. 24–25): no lens; the drops touch at a point or part
             let parted = g_eq >= 2.0 - self.l0_m / R0_M;
             vec![
-                Metric::new(self.case, format!("separation σ12={s12:.1}"), "match", f64::from(u8::from(parted)))
-                    .against(1.0, exact("point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not"))
+                Metric::check(self.case, format!("separation σ12={s12:.1}"), "match", parted, "point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not")
                     .run(m.run)
                     .note(format!("{status}G1G2/R0 = {g_eq:.3} at the end (Eq. 25: the liquids separate if σ12 ≥ 2σ1)")),
                 metric.note(format!("{status}mean over the last quarter (±{g_sd:.3}); σ12 ≥ σ1 + σ2: touching spheres give 2, parting more")),
@@ -78,13 +77,13 @@ impl Judge<'_> {
     /// left at the end of the run (standard deviation `sd` of the last quarter).
     fn g1g2_tolerance(&self, sd: f64) -> Tolerance {
         let half_spacing = 0.5 * self.l0_m / R0_M;
-        Tolerance {
-            abs: half_spacing + 2.0 * sd,
-            source: format!(
+        Tolerance::absolute(
+            half_spacing + 2.0 * sd,
+            format!(
                 "half a particle spacing (l0/2R0 = {half_spacing:.3}) plus twice the residual oscillation of the last quarter ({:.3})",
                 2.0 * sd
             ),
-        }
+        )
     }
 
     /// The oscillation of G1G2(t): the fit's period and damping, and the paper's definitions.
@@ -126,15 +125,12 @@ impl Judge<'_> {
     fn regime(&self, m: &DoubletRun, regime: Regime) -> Metric {
         let (s12, seen) = (m.sigma12_n_m, m.regime_seen);
         let (expected, accepted) = expected_regime(regime);
-        Metric::new(
+        Metric::check(
             self.case,
             format!("regime σ12={s12:.1}"),
             "match",
-            f64::from(u8::from(accepted.contains(&seen))),
-        )
-        .against(
-            1.0,
-            exact("a regime either matches the Neumann inequalities or not"),
+            accepted.contains(&seen),
+            "a regime either matches the Neumann inequalities or not",
         )
         .run(m.run)
         .note(format!(
@@ -177,7 +173,7 @@ impl Judge<'_> {
         .collect();
         out.push(
             Metric::new(self.case, format!("Eq. 27 residual σ12={s12:.1}"), "%", 100.0 * an.eq27_residual)
-                .against(0.0, Tolerance { abs: 10.0, source: "10 %: the paper's own mean error (Table 1)".into() })
+                .against(0.0, Tolerance::absolute(10.0, "10 %: the paper's own mean error (Table 1)"))
                 .paper(paper_values::lookup("matte_slag_doublet", "sigma12_n_m", s12, "eq27_residual_percent"))
                 .run(m.run)
                 .note(format!("(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1 from the measured angles; vector residual |Σσt|/σ1 = {:.1} %", 100.0 * an.vector_residual)),
@@ -199,10 +195,10 @@ impl Judge<'_> {
             (_, false) => 2.5,
             (_, true) => 1.05,
         };
-        Tolerance {
-            abs: 2.0 * method_error,
-            source: format!("twice the angle measurement's own error on a voxelised analytic doublet at this resolution ({method_error:.1}° for {what}; measure::geometry tests)"),
-        }
+        Tolerance::absolute(
+            2.0 * method_error,
+            format!("twice the angle measurement's own error on a voxelised analytic doublet at this resolution ({method_error:.1}° for {what}; measure::geometry tests)"),
+        )
     }
 
     /// The paper's trends (Figs. 8–9), reported, not judged: the σ12 of the shortest period
@@ -252,14 +248,6 @@ fn arg_best(pts: &[(f64, f64)], best: fn(f64, f64) -> bool) -> f64 {
         })
         .map(|p| p.0)
         .unwrap_or(f64::NAN)
-}
-
-/// A yes/no metric's tolerance: exactly right or not.
-fn exact(source: &str) -> Tolerance {
-    Tolerance {
-        abs: 0.0,
-        source: source.into(),
-    }
 }
 
 /// The regime the Neumann inequalities give, in words, and the regimes seen that match it.

@@ -5,58 +5,48 @@ use super::measure::HardRun;
 use super::{SCENES, TRANSIENT};
 use crate::suite::{Metric, Tolerance};
 
-/// A tolerance of zero: the invariant holds exactly or not.
-fn exact(what: &str) -> Tolerance {
-    Tolerance {
-        abs: 0.0,
-        source: what.to_string(),
-    }
-}
-
-/// 1 for yes, 0 for no.
-fn flag(b: bool) -> f64 {
-    f64::from(u8::from(b))
-}
-
 /// The metrics of one run of the case `case`.
 pub fn run_metrics(case: &str, m: &HardRun) -> Vec<Metric> {
     let (run, sc) = (m.run, &m.run.info.scene);
     let id = &run.id;
-    let metric = |name: &str, unit: &str, value: f64| {
-        Metric::new(case, format!("{id}: {name}"), unit, value).run(run)
+    let name = |what: &str| format!("{id}: {what}");
+    let metric =
+        |what: &str, unit: &str, value: f64| Metric::new(case, name(what), unit, value).run(run);
+    let check = |what: &str, ok: bool, source: &str| {
+        Metric::check(case, name(what), "yes", ok, source).run(run)
     };
     let kept = m.counts.first().is_some_and(|&c0| {
         m.counts.iter().all(|&c| c == c0) && c0 as usize == run.info.fluid_particles
     });
     let mass = &m.mass_kg;
     let mut out = vec![
-        metric("completed", "yes", flag(run.completed()))
-            .against(1.0, exact("the run reaches its end time without a blow-up"))
-            .note(
-                run.info
-                    .error
-                    .clone()
-                    .unwrap_or_else(|| format!("{} steps", run.info.steps)),
-            ),
-        metric("particles kept", "yes", flag(kept)).against(
-            1.0,
-            exact("every particle is accounted for at every output"),
-        ),
-        metric(
-            "mass conserved",
-            "yes",
-            flag(mass.iter().all(|x| x.to_bits() == mass[0].to_bits())),
+        check(
+            "completed",
+            run.completed(),
+            "the run reaches its end time without a blow-up",
         )
-        .against(
-            1.0,
-            exact("the total mass is the same bits at every output"),
+        .note(
+            run.info
+                .error
+                .clone()
+                .unwrap_or_else(|| format!("{} steps", run.info.steps)),
+        ),
+        check(
+            "particles kept",
+            kept,
+            "every particle is accounted for at every output",
+        ),
+        check(
+            "mass conserved",
+            mass.iter().all(|x| x.to_bits() == mass[0].to_bits()),
+            "the total mass is the same bits at every output",
         ),
     ];
     if !sc.walls.is_empty() {
         out.push(
             metric("particles inside walls", "count", m.inside_walls as f64).against(
                 0.0,
-                exact("no liquid particle deeper than l0/2 inside a wall (final state)"),
+                Tolerance::exact("no liquid particle deeper than l0/2 inside a wall (final state)"),
             ),
         );
     }
@@ -68,11 +58,10 @@ pub fn run_metrics(case: &str, m: &HardRun) -> Vec<Metric> {
         )
         .against(
             0.0,
-            Tolerance {
-                abs: 0.1,
-                source: "10 %: ten times the 1 % compression the sound speeds are chosen for"
-                    .into(),
-            },
+            Tolerance::absolute(
+                0.1,
+                "10 %: ten times the 1 % compression the sound speeds are chosen for",
+            ),
         )
         .note(format!(
             "largest ρ/ρ0 − 1 after the first {:.0} % of the run; over the whole run {:.3}",
@@ -103,10 +92,10 @@ fn conservation(case: &str, m: &HardRun) -> [Metric; 2] {
         .sum();
     [
         Metric::new(case, format!("{id}: momentum drift"), "kg m/s", m.momentum_drift_kg_m_s)
-            .against(0.0, Tolerance { abs: 1e-9 * scale, source: format!("1e-9 of the motion's momentum scale M·|v|max = {scale:.2e} kg m/s: every pair force is antisymmetric, only round-off remains") })
+            .against(0.0, Tolerance::absolute(1e-9 * scale, format!("1e-9 of the motion's momentum scale M·|v|max = {scale:.2e} kg m/s: every pair force is antisymmetric, only round-off remains")))
             .run(run),
         Metric::new(case, format!("{id}: energy growth after the transient"), "J", m.energy_growth_j)
-            .against(0.0, Tolerance { abs: 2.0 * stored, source: format!("twice the compression energy the EOS can hold at the cohesive pressure, p_b²/(2ρc²)·V = {stored:.2e} J") })
+            .against(0.0, Tolerance::absolute(2.0 * stored, format!("twice the compression energy the EOS can hold at the cohesive pressure, p_b²/(2ρc²)·V = {stored:.2e} J")))
             .run(run)
             .note("largest rise of kinetic + interfacial energy above its value at 20 % of the run"),
     ]
@@ -125,7 +114,7 @@ fn integrity(case: &str, m: &HardRun) -> Vec<Metric> {
     )
     .run(run);
     if let Some(n) = expected_bodies {
-        bodies = bodies.against(n as f64, exact("particles within 1.5 l0 of each other form one body (physics.md §7's interface distance); no spurious fragments"));
+        bodies = bodies.against(n as f64, Tolerance::exact("particles within 1.5 l0 of each other form one body (physics.md §7's interface distance); no spurious fragments"));
     }
     // clumping is judged on the drop at rest: during a violent relaxation particles pass within
     // l0/2 of each other for a while (the 5³ cube: 29 % at 3 ms, 0 % from 4 ms)
@@ -136,19 +125,17 @@ fn integrity(case: &str, m: &HardRun) -> Vec<Metric> {
     if resting {
         clumped = clumped.against(
             0.0,
-            Tolerance {
-                abs: 0.01,
-                source:
-                    "1 %: a drop at rest must not pair into clusters (none on the starting lattice)"
-                        .into(),
-            },
+            Tolerance::absolute(
+                0.01,
+                "1 %: a drop at rest must not pair into clusters (none on the starting lattice)",
+            ),
         );
     }
     let mut out = vec![bodies, clumped];
     if resting {
         out.push(
             Metric::new(case, format!("{id}: centroid drift"), "m", m.centroid_drift_m)
-                .against(0.0, Tolerance { abs: 1e-6 * l0, source: "1e-6 l0: with momentum conserved to round-off the centroid cannot move measurably".into() })
+                .against(0.0, Tolerance::absolute(1e-6 * l0, "1e-6 l0: with momentum conserved to round-off the centroid cannot move measurably"))
                 .run(run)
                 .note(format!("over {} steps", run.info.steps)),
         );

@@ -58,10 +58,7 @@ impl Impact {
         let (rho, sigma) = (l.density_kg_m3, l.surface_tension_n_m);
         vec![
             Metric::new(self.name(), format!("equilibrium height {id}"), "mm", s.height_mm)
-                .against(yl.height_m * 1e3, Tolerance {
-                    abs: l0_m * 1e3,
-                    source: "one spacing: the top is known to ±l0/2 (highest particle + l0/2) and the plate surface to ±l0/2".into(),
-                })
+                .against(yl.height_m * 1e3, Tolerance::absolute(l0_m * 1e3, "one spacing: the top is known to ±l0/2 (highest particle + l0/2) and the plate surface to ±l0/2"))
                 .paper(self.paper("height_equilibrium_mm"))
                 .run(m.run)
                 .note(format!(
@@ -70,18 +67,12 @@ impl Impact {
                     m.volume_m3 * 1e9
                 )),
             Metric::new(self.name(), format!("equilibrium contact angle {id}"), "deg", s.theta_deg)
-                .against(theta, Tolerance {
-                    abs: 5.0,
-                    source: "the side-view measurement alone errs by up to 2.9° on analytic caps at R/l0 = 10 (measure::side_view tests), plus 2° for the residual oscillation".into(),
-                })
+                .against(theta, Tolerance::absolute(5.0, "the side-view measurement alone errs by up to 2.9° on analytic caps at R/l0 = 10 (measure::side_view tests), plus 2° for the residual oscillation"))
                 .paper(self.paper("contact_angle_equilibrium_deg"))
                 .run(m.run)
                 .note(format!("{tail}, residual oscillation ±{:.1}°; mean of the left and right side-view angles", s.theta_osc_deg)),
             Metric::new(self.name(), format!("wetted radius {id}"), "mm", s.contact_radius_mm)
-                .against(yl.contact_radius_m * 1e3, Tolerance {
-                    abs: l0_m * 1e3,
-                    source: "one spacing: the wetted disc is counted in whole first-layer particles".into(),
-                })
+                .against(yl.contact_radius_m * 1e3, Tolerance::absolute(l0_m * 1e3, "one spacing: the wetted disc is counted in whole first-layer particles"))
                 .run(m.run)
                 .note(format!("{tail}; radius of the disc with the first liquid layer's area")),
         ]

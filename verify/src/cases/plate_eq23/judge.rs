@@ -5,16 +5,35 @@ use super::measure::PlateRun;
 use super::Prediction;
 use crate::suite::{Metric, Tolerance};
 
+/// The tolerance of θ12 at a solid/liquid/liquid line [deg].
+pub fn triple_line_tolerance() -> Tolerance {
+    Tolerance::absolute(
+        5.4,
+        "twice the fit's own error on voxelised tilted interfaces at R/l0 = 8 (2.7°, measure::geometry tests)",
+    )
+}
+
 /// The metrics of one run.
 pub fn run_metrics(case: &str, m: &PlateRun) -> anyhow::Result<Vec<Metric>> {
     let prediction = Prediction::of(m.sigma_n_m, m.theta23_deg)?;
     let mut out = vec![contact(case, m, &prediction)];
     if let (Some(theta12_ref), Some(measured)) = (prediction.line_to_measure(), &m.theta12_deg) {
         out.push(
-            Metric::new(case, format!("θ12 {}", m.run.id), "deg", *measured.as_ref().unwrap_or(&f64::NAN))
-                .against(theta12_ref, Tolerance { abs: 5.4, source: "twice the fit's own error on voxelised tilted interfaces at R/l0 = 8 (2.7°, measure::geometry tests)".into() })
-                .run(m.run)
-                .note(match measured { Ok(_) => "fit of the 1–2 interface in a band above the plate, angle inside liquid 1".to_string(), Err(e) => format!("not measurable: {e}") }),
+            Metric::new(
+                case,
+                format!("θ12 {}", m.run.id),
+                "deg",
+                *measured.as_ref().unwrap_or(&f64::NAN),
+            )
+            .against(theta12_ref, triple_line_tolerance())
+            .run(m.run)
+            .note(match measured {
+                Ok(_) => {
+                    "fit of the 1–2 interface in a band above the plate, angle inside liquid 1"
+                        .to_string()
+                }
+                Err(e) => format!("not measurable: {e}"),
+            }),
         );
     }
     out.push(
@@ -45,8 +64,7 @@ fn contact(case: &str, m: &PlateRun, prediction: &Prediction) -> Metric {
     let ok = seen == prediction.words()
         || (prediction.on_boundary() && (seen.starts_with("both") || seen == limit));
     let shares = &m.contact.wetted_fraction;
-    Metric::new(case, format!("contact {}", m.run.id), "match", f64::from(u8::from(ok)))
-        .against(1.0, Tolerance { abs: 0.0, source: "the contact regime matches Eq. 23 or not".into() })
+    Metric::check(case, format!("contact {}", m.run.id), "match", ok, "the contact regime matches Eq. 23 or not")
         .run(m.run)
         .note(format!(
             "{}Eq. 23: cos θ12 = {cos12:.3} → {}; seen at t = {:.0} ms: {seen} (plate-layer shares {:.2} / {:.2})",

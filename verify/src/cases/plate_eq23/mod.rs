@@ -12,6 +12,8 @@ mod draw;
 mod judge;
 mod measure;
 
+pub(super) use judge::triple_line_tolerance;
+
 use super::analysis::{self, Analysis};
 use super::scene::{LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};
 use crate::analytic::eq23::{self, SolidContact};

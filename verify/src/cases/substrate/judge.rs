@@ -27,10 +27,7 @@ pub fn inside_plate_metric(case: &str, run: &RunData) -> Metric {
     )
     .against(
         0.0,
-        Tolerance {
-            abs: 0.0,
-            source: "none may enter a wall (issue 5's invariant)".into(),
-        },
+        Tolerance::exact("none may enter a wall (issue 5's invariant)"),
     )
     .run(run)
     .note(format!(

@@ -1,5 +1,6 @@
 //! The paper checks, one module each.
 
+mod analysis;
 mod cube_drop;
 mod doublet;
 mod hard_cases;
@@ -7,8 +8,9 @@ mod impact;
 mod incline;
 pub mod paper_values;
 mod plate_eq23;
-pub mod scenes;
+pub mod scene;
 pub mod substrate;
+mod views;
 mod water_oil_teflon;
 
 use crate::suite::Case;

@@ -10,21 +10,35 @@
 //! (μR/σ ≈ 0.8 s) would need ~10⁶ steps. The oil's density is not given in the paper: 970 kg/m³
 //! (a typical silicone oil) is assumed.
 
+use super::analysis::{self, Analysis};
 use super::paper_values;
-use super::scenes::{self, LiquidProps};
+use super::plate_eq23::triple_line_tolerance;
+use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, GRAVITY_M_S2};
+use super::views;
 use crate::analytic::eq23::{self, SolidContact};
 use crate::measure::{geometry, surface};
 use crate::report::plot::{self, ParticleView};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec, Tolerance};
+use solver::scene::{BodyShape, WallBoundary, WallShape};
 use std::path::Path;
 
 /// The case.
 pub struct WaterOilTeflon;
 
-const WATER: LiquidProps = ("water", 997.0, 1.5e-3, 0.0728);
+const WATER: LiquidProps = LiquidProps {
+    name: "water",
+    density_kg_m3: 997.0,
+    viscosity_pa_s: 1.5e-3,
+    surface_tension_n_m: 0.0728,
+};
 /// Oil viscosity used [Pa·s] (the paper's is 9.35 Pa·s; see the module doc).
 const OIL_MU: f64 = 0.05;
-const OIL: LiquidProps = ("oil", 970.0, OIL_MU, 0.0201);
+const OIL: LiquidProps = LiquidProps {
+    name: "oil",
+    density_kg_m3: 970.0,
+    viscosity_pa_s: OIL_MU,
+    surface_tension_n_m: 0.0201,
+};
 const SIGMA_WO: f64 = 0.052;
 const THETA_W: f64 = 108.9;
 const THETA_O: f64 = 16.4;
@@ -77,91 +91,142 @@ impl Case for WaterOilTeflon {
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
         let l0 = l0(f);
         let r = (3.0 * VOLUME_M3 / (4.0 * std::f64::consts::PI)).cbrt();
-        let c = scenes::sound_speed_for(WATER.3, WATER.1, l0, 5.0);
-        let mut t = scenes::header(l0, c, end(f), 2.0e-3, None, true, "water and oil on Teflon");
-        t += &scenes::liquid(WATER);
-        t += &scenes::liquid(OIL);
-        t += &format!("[[interface]]\nliquids = [\"water\", \"oil\"]\ntension = {SIGMA_WO:e}\n");
-        t += &format!("[[solid]]\nname = \"teflon\"\ncontact_angles = {{ water = {THETA_W:e}, oil = {THETA_O:e} }}\n");
-        t += &format!("[[body]]\nname = \"water\"\nliquid = \"water\"\nshape = {{ kind = \"sphere\", center = [0.0, 0.0, {r:e}], radius = {r:e} }}\n");
-        // the oil drop sits on top of the water drop, one spacing above it
-        let zo = 3.0 * r + l0;
-        t += &format!("[[body]]\nname = \"oil\"\nliquid = \"oil\"\nshape = {{ kind = \"sphere\", center = [0.0, 0.0, {zo:e}], radius = {r:e} }}\n");
-        t += &format!("[[wall]]\nname = \"plate\"\nsolid = \"teflon\"\nshape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {PLATE_RADIUS_M:e} }}\n");
+        let sphere = |z: f64| BodyShape::Sphere {
+            center: [0.0, 0.0, z],
+            radius: r,
+        };
+        let scene = SceneBuilder::new(l0, sound_speed_for(&WATER, l0, 5.0))
+            .time(end(f), 2.0e-3)
+            .paper_effects()
+            .gravity(GRAVITY_M_S2)
+            .liquid(&WATER)
+            .liquid(&OIL)
+            .interface(WATER.name, OIL.name, SIGMA_WO)
+            .solid("teflon", &[(WATER.name, THETA_W), (OIL.name, THETA_O)])
+            .body("water", WATER.name, sphere(r))
+            // the oil drop sits on top of the water drop, one spacing above it
+            .body("oil", OIL.name, sphere(3.0 * r + l0))
+            .wall(
+                "plate",
+                "teflon",
+                WallShape::Disk {
+                    center: [0.0; 3],
+                    radius: PLATE_RADIUS_M,
+                },
+                WallBoundary::FreeSlip,
+            )
+            .build();
         vec![RunSpec {
             id: "water_oil".into(),
-            scene: scenes::parse(&t),
+            scene,
             snapshot_times_s: vec![],
         }]
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
-        let l0 = l0(f);
-        let mut metrics = Vec::new();
+        analysis::analyse(self, f, runs, dir)
+    }
+}
+
+/// Eq. 23 for water and oil on Teflon.
+fn expected() -> anyhow::Result<SolidContact> {
+    eq23::solid_contact(
+        WATER.surface_tension_n_m,
+        OIL.surface_tension_n_m,
+        SIGMA_WO,
+        THETA_W,
+        THETA_O,
+    )
+    .map_err(anyhow::Error::msg)
+}
+
+/// The final state of the run, measured.
+pub struct Final<'r> {
+    /// The run.
+    pub run: &'r RunData,
+    /// θ12 at the water/oil/Teflon line, inside the water [deg], where Eq. 23 has a line, or
+    /// why it could not be measured.
+    pub theta12_deg: Option<Result<f64, String>>,
+    /// The oil's contact angle on the bare Teflon [deg], or why it could not be measured.
+    pub oil_angle_deg: Result<f64, String>,
+    /// The water's share of the wetted plate [-].
+    pub water_share: f64,
+}
+
+impl Analysis for WaterOilTeflon {
+    type Measured<'r> = Option<Final<'r>>;
+
+    fn measure<'r>(&self, f: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
         let Some(run) = runs.first() else {
-            return Ok(metrics);
+            return Ok(None);
         };
-        let expected = eq23::solid_contact(WATER.3, OIL.3, SIGMA_WO, THETA_W, THETA_O)
-            .map_err(anyhow::Error::msg)?;
-        let cloud = run.last.cloud(l0);
+        let has_line = expected()?.has_triple_line();
+        let cloud = run.last.cloud(l0(f));
         let classes = surface::classify(&cloud);
-        let status = run.status_note();
-        if let SolidContact::TripleLine { theta12_deg } = expected {
-            let m = geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0);
+        Ok(Some(Final {
+            run,
+            theta12_deg: has_line
+                .then(|| geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0)),
+            oil_angle_deg: geometry::sessile_contact_angle(&cloud, &classes, 1, 0.0),
+            water_share: geometry::wall_contact(&cloud, 0.0)
+                .wetted_fraction
+                .first()
+                .copied()
+                .unwrap_or(f64::NAN),
+        }))
+    }
+
+    fn judge(&self, _: Fidelity, measured: &Self::Measured<'_>) -> anyhow::Result<Vec<Metric>> {
+        let Some(m) = measured else {
+            return Ok(Vec::new());
+        };
+        let (run, status) = (m.run, m.run.status_note());
+        let value = |r: &Result<f64, String>| *r.as_ref().unwrap_or(&f64::NAN);
+        let mut metrics = Vec::new();
+        if let (SolidContact::TripleLine { theta12_deg }, Some(theta12)) =
+            (expected()?, &m.theta12_deg)
+        {
             metrics.push(
-                Metric::new(self.name(), "θ12 water/oil/Teflon", "deg", *m.as_ref().unwrap_or(&f64::NAN))
-                    .against(theta12_deg, Tolerance { abs: 5.4, source: "twice the fit's own error on voxelised tilted interfaces at R/l0 = 8 (2.7°, measure::geometry tests)".into() })
+                Metric::new(self.name(), "θ12 water/oil/Teflon", "deg", value(theta12))
+                    .against(theta12_deg, triple_line_tolerance())
                     .paper(paper_values::number("water_oil_teflon", "theta12_deg"))
                     .run(run)
-                    .note(match &m { Ok(_) => format!("{status}water–oil interface fitted in a band above the plate; angle inside the water"), Err(e) => format!("{status}not measurable: {e}") }),
+                    .note(match theta12 { Ok(_) => format!("{status}water–oil interface fitted in a band above the plate; angle inside the water"), Err(e) => format!("{status}not measurable: {e}") }),
             );
         }
-        let oil = geometry::sessile_contact_angle(&cloud, &classes, 1, 0.0);
         let paper_oil = paper_values::number("water_oil_teflon", "oil_contact_angle_deg");
         metrics.push(
-            Metric::new(self.name(), "oil contact angle on Teflon", "deg", *oil.as_ref().unwrap_or(&f64::NAN))
-                .against(THETA_O, Tolerance { abs: paper_oil.map_or(8.0, |p| (p - THETA_O).abs()), source: "the paper's own miss (24.0° for 16.4°): a film a few particles thick resolves the angle no better".into() })
+            Metric::new(self.name(), "oil contact angle on Teflon", "deg", value(&m.oil_angle_deg))
+                .against(THETA_O, Tolerance::absolute(paper_oil.map_or(8.0, |p| (p - THETA_O).abs()), "the paper's own miss (24.0° for 16.4°): a film a few particles thick resolves the angle no better"))
                 .paper(paper_oil)
                 .run(run)
-                .note(match &oil { Ok(_) => format!("{status}sphere fit to the oil's free surface in a band above the plate"), Err(e) => format!("{status}not measurable: {e}") }),
+                .note(match &m.oil_angle_deg { Ok(_) => format!("{status}sphere fit to the oil's free surface in a band above the plate"), Err(e) => format!("{status}not measurable: {e}") }),
         );
-        let contact = geometry::wall_contact(&cloud, 0.0);
         metrics.push(
-            Metric::new(self.name(), "water share of the wetted plate", "-", contact.wetted_fraction.first().copied().unwrap_or(f64::NAN))
+            Metric::new(self.name(), "water share of the wetted plate", "-", m.water_share)
                 .run(run)
                 .note("Eq. 23 has a triple line (θ12 < 180°): the water touches the plate directly, no oil film under it (paper: the same)"),
         );
-        let points: Vec<(f64, f64, usize)> = (0..run.last.pos.len())
-            .filter(|&i| {
-                run.last.pos[i][1].abs() < l0
-                    && (!run.last.wall[i] || run.last.pos[i][0].abs() < 6e-3)
-            })
-            .map(|i| {
-                (
-                    run.last.pos[i][0] * 1e3,
-                    run.last.pos[i][2] * 1e3,
-                    if run.last.wall[i] {
-                        2
-                    } else {
-                        run.last.phase[i] as usize
-                    },
-                )
-            })
-            .collect();
+        Ok(metrics)
+    }
+
+    fn draw(&self, f: Fidelity, measured: &Self::Measured<'_>, dir: &Path) -> anyhow::Result<()> {
+        let Some(m) = measured else {
+            return Ok(());
+        };
         plot::draw_particles(
             &ParticleView {
                 title: format!(
                     "Water and oil on Teflon at t = {:.2} s (slice |y| < l0)",
-                    run.last.time_s
+                    m.run.last.time_s
                 ),
                 x_label: "x [mm]".into(),
                 y_label: "z [mm]".into(),
-                points,
+                points: views::phase_slice(&m.run.last, l0(f), 6e-3, 2),
                 categories: vec!["water".into(), "oil".into(), "Teflon".into()],
                 rects: vec![],
                 marker_px: 4,
             },
             &dir.join("side_view"),
-        )?;
-        Ok(metrics)
+        )
     }
 }

@@ -1,5 +1,9 @@
 //! `timeseries.csv`: one row of observables per output time. Column names carry their units.
 
+mod columns;
+
+pub use columns::{Axis, LiquidColumn, RunColumn};
+
 use solver::Observables;
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -7,69 +11,22 @@ use std::path::Path;
 
 /// Column names for a run with the given liquid phase names.
 pub fn header(phases: &[String]) -> Vec<String> {
-    let mut h: Vec<String> = [
-        "time_s",
-        "dt_s",
-        "step",
-        "kinetic_energy_J",
-        "interfacial_energy_J",
-        "momentum_x_kg_m_s",
-        "momentum_y_kg_m_s",
-        "momentum_z_kg_m_s",
-        "max_speed_m_s",
-        "max_density_deviation",
-        "max_compression",
-    ]
-    .iter()
-    .map(|s| s.to_string())
-    .collect();
-    for p in phases {
-        h.push(format!("{p}_count"));
-        h.push(format!("{p}_mass_kg"));
-        for q in ["centroid", "centroid_velocity", "extent", "min", "max"] {
-            let unit = if q == "centroid_velocity" { "m_s" } else { "m" };
-            for ax in ["x", "y", "z"] {
-                h.push(format!("{p}_{q}_{ax}_{unit}"));
-            }
-        }
-        h.push(format!("{p}_kinetic_energy_J"));
-        h.push(format!("{p}_q4"));
-    }
-    h
+    let run = RunColumn::ALL.iter().map(|c| c.name());
+    let liquids = phases
+        .iter()
+        .flat_map(|p| LiquidColumn::ALL.iter().map(move |c| c.name(p)));
+    run.chain(liquids).collect()
 }
 
 /// The values of one row, in [`header`] order; `q4[a]` is the l = 4 shape moment of liquid `a`
 /// ([`crate::measure::shape::cubic_harmonic_q4`]).
 pub fn row(o: &Observables, q4: &[f64]) -> Vec<f64> {
-    let mut r = vec![
-        o.time_s,
-        o.dt_s,
-        o.step as f64,
-        o.kinetic_energy_j,
-        o.interfacial_energy_j,
-        o.momentum_kg_m_s[0],
-        o.momentum_kg_m_s[1],
-        o.momentum_kg_m_s[2],
-        o.max_speed_m_s,
-        o.max_density_deviation,
-        o.max_compression,
-    ];
-    for (a, p) in o.phases.iter().enumerate() {
-        r.push(p.count as f64);
-        r.push(p.mass_kg);
-        for v in [
-            p.centroid_m,
-            p.centroid_velocity_m_s,
-            p.extent_m,
-            p.min_m,
-            p.max_m,
-        ] {
-            r.extend_from_slice(&v);
-        }
-        r.push(p.kinetic_energy_j);
-        r.push(q4.get(a).copied().unwrap_or(f64::NAN));
-    }
-    r
+    let run = RunColumn::ALL.iter().map(|c| c.value(o));
+    let liquids = o.phases.iter().enumerate().flat_map(|(a, p)| {
+        let q4 = q4.get(a).copied().unwrap_or(f64::NAN);
+        LiquidColumn::ALL.iter().map(move |c| c.value(p, q4))
+    });
+    run.chain(liquids).collect()
 }
 
 /// The l = 4 shape moment of each liquid phase of a simulation [-].
@@ -150,5 +107,61 @@ impl Table {
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
         let k = self.columns.iter().position(|c| c == name)?;
         Some(self.rows.iter().map(|r| r[k]).collect())
+    }
+
+    /// The values of a column of the whole run (empty if missing).
+    pub fn run_column(&self, c: RunColumn) -> Vec<f64> {
+        self.column(&c.name()).unwrap_or_default()
+    }
+
+    /// The values of a column of the liquid named `liquid` (empty if missing).
+    pub fn liquid_column(&self, liquid: &str, c: LiquidColumn) -> Vec<f64> {
+        self.column(&c.name(liquid)).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use solver::observables::PhaseStats;
+
+    #[test]
+    fn header_and_row_agree_and_columns_read_back() {
+        let phase = |name: &str, count: usize| PhaseStats {
+            name: name.into(),
+            count,
+            mass_kg: 2.0 * count as f64,
+            centroid_m: [1.0, 2.0, 3.0],
+            ..Default::default()
+        };
+        let o = Observables {
+            time_s: 0.5,
+            step: 7,
+            momentum_kg_m_s: [0.0, 4.0, 0.0],
+            phases: vec![phase("a", 3), phase("b", 5)],
+            ..Default::default()
+        };
+        let names: Vec<String> = o.phases.iter().map(|p| p.name.clone()).collect();
+        let header = header(&names);
+        let row = row(&o, &[0.1, 0.2]);
+        assert_eq!(header.len(), row.len());
+        assert_eq!(
+            header.len(),
+            RunColumn::ALL.len() + 2 * LiquidColumn::ALL.len()
+        );
+        let table = Table {
+            columns: header,
+            rows: vec![row],
+        };
+        assert_eq!(table.run_column(RunColumn::Step), vec![7.0]);
+        assert_eq!(table.run_column(RunColumn::Momentum(Axis::Y)), vec![4.0]);
+        assert_eq!(table.liquid_column("b", LiquidColumn::Count), vec![5.0]);
+        assert_eq!(table.liquid_column("b", LiquidColumn::Mass), vec![10.0]);
+        assert_eq!(
+            table.liquid_column("a", LiquidColumn::Centroid(Axis::Z)),
+            vec![3.0]
+        );
+        assert_eq!(table.liquid_column("b", LiquidColumn::Q4), vec![0.2]);
+        assert!(table.liquid_column("c", LiquidColumn::Q4).is_empty());
     }
 }

@@ -1,9 +1,10 @@
 //! The study's points: problems, variants, resolutions, and their scenes.
 
 use crate::analytic::{lamb, young_laplace};
-use crate::cases::scenes;
+use crate::cases::scene::{SceneBuilder, MATTE};
 use serde::{Deserialize, Serialize};
 use solver::kernel::KernelKind;
+use solver::scene::{BodyShape, Reinit, WallBoundary, WallShape};
 use solver::Scene;
 
 /// A problem with an analytic answer.
@@ -29,12 +30,21 @@ impl Problem {
     /// The analytic reference value: period [s] or height [m].
     pub fn reference(self) -> f64 {
         match self {
-            Problem::CubeDrop => {
-                lamb::lamb_period(4, SIGMA, RHO, lamb::cube_equivalent_radius(CUBE_SIDE_M))
-            }
-            Problem::SessileDrop => young_laplace::sessile_drop(drop_volume(), RHO, SIGMA, 90.0, G)
-                .map(|d| d.height_m)
-                .unwrap_or(f64::NAN),
+            Problem::CubeDrop => lamb::lamb_period(
+                4,
+                MATTE.surface_tension_n_m,
+                MATTE.density_kg_m3,
+                lamb::cube_equivalent_radius(CUBE_SIDE_M),
+            ),
+            Problem::SessileDrop => young_laplace::sessile_drop(
+                drop_volume(),
+                MATTE.density_kg_m3,
+                MATTE.surface_tension_n_m,
+                90.0,
+                G,
+            )
+            .map(|d| d.height_m)
+            .unwrap_or(f64::NAN),
         }
     }
 
@@ -195,9 +205,7 @@ pub struct Point {
     pub resolution: usize,
 }
 
-const RHO: f64 = 4500.0;
-const SIGMA: f64 = 0.40;
-const MU: f64 = 3.13e-3;
+/// Gravity [m/s²].
 const G: f64 = 9.8;
 const CUBE_SIDE_M: f64 = 1.0e-3;
 const DROP_RADIUS_M: f64 = 1.0e-3;
@@ -237,60 +245,55 @@ impl Point {
     /// The scene of the point.
     pub fn scene(&self) -> Scene {
         let v = &self.variant;
-        let l0 = self.l0();
-        let density = if v.continuity {
-            "[density]\nscheme = \"continuity\"\nreinit = \"shepard\"\nreinit_every = 20\n"
+        // c² = 150 m²/s² as the paper's cube drop
+        let b = SceneBuilder::new(self.l0(), 150f64.sqrt())
+            .kernel(v.kernel, v.h_over_l0, v.re_over_l0)
+            .paper_effects()
+            .liquid(&MATTE);
+        let b = if v.continuity {
+            b.continuity_density(Reinit::Shepard, 20)
         } else {
-            ""
+            b
         };
-        let disc = format!(
-            "kernel = \"{}\"\nh_over_l0 = {}\nre_over_l0 = {}\n",
-            v.kernel.name(),
-            v.h_over_l0,
-            v.re_over_l0
-        );
-        let matte = ("matte", RHO, MU, SIGMA);
-        let text = match self.problem {
+        let b = match self.problem {
             Problem::CubeDrop => {
                 let h = 0.5 * CUBE_SIDE_M;
-                // c² = 150 m²/s² as the paper's cube drop; 3.5 ms ≈ 3 periods
-                let mut t = scenes::header(
-                    l0,
-                    150f64.sqrt(),
-                    3.5e-3,
-                    1.0e-5,
-                    None,
-                    false,
-                    "study: cube drop",
-                );
-                t = t.replace("[discretisation]\n", &format!("[discretisation]\n{disc}"));
-                t += density;
-                t += &scenes::liquid(matte);
-                t += &format!("[[body]]\nname = \"cube\"\nliquid = \"matte\"\nshape = {{ kind = \"box\", min = [{m:e}, {m:e}, {m:e}], max = [{h:e}, {h:e}, {h:e}] }}\n", m = -h);
-                t
+                // 3.5 ms ≈ 3 periods
+                b.time(3.5e-3, 1.0e-5).body(
+                    "cube",
+                    MATTE.name,
+                    BodyShape::Box {
+                        min: [-h; 3],
+                        max: [h; 3],
+                    },
+                )
             }
-            Problem::SessileDrop => {
-                // 20 ms ≈ 6 capillary times √(ρR³/σ); the drop starts as the hemisphere it
-                // would be without gravity
-                let mut t = scenes::header(
-                    l0,
-                    150f64.sqrt(),
-                    0.02,
-                    2.0e-4,
-                    None,
-                    true,
-                    "study: sessile drop",
-                );
-                t = t.replace("[discretisation]\n", &format!("[discretisation]\n{disc}"));
-                t += density;
-                t += &scenes::liquid(matte);
-                t += "[[solid]]\nname = \"plate\"\ncontact_angles = { matte = 90.0 }\n";
-                t += &format!("[[body]]\nname = \"drop\"\nliquid = \"matte\"\nshape = {{ kind = \"hemisphere\", center = [0.0, 0.0, 0.0], radius = {DROP_RADIUS_M:e}, pole = [0.0, 0.0, 1.0] }}\n");
-                t += &format!("[[wall]]\nname = \"plate\"\nsolid = \"plate\"\nshape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = {:e} }}\n", 2.0 * DROP_RADIUS_M);
-                t
-            }
+            // 20 ms ≈ 6 capillary times √(ρR³/σ); the drop starts as the hemisphere it would be
+            // without gravity
+            Problem::SessileDrop => b
+                .time(0.02, 2.0e-4)
+                .gravity([0.0, 0.0, -G])
+                .solid("plate", &[(MATTE.name, 90.0)])
+                .body(
+                    "drop",
+                    MATTE.name,
+                    BodyShape::Hemisphere {
+                        center: [0.0; 3],
+                        radius: DROP_RADIUS_M,
+                        pole: [0.0, 0.0, 1.0],
+                    },
+                )
+                .wall(
+                    "plate",
+                    "plate",
+                    WallShape::Disk {
+                        center: [0.0; 3],
+                        radius: 2.0 * DROP_RADIUS_M,
+                    },
+                    WallBoundary::FreeSlip,
+                ),
         };
-        scenes::parse(&text)
+        b.build()
     }
 }
 

@@ -12,6 +12,19 @@ pub struct Tolerance {
 }
 
 impl Tolerance {
+    /// A tolerance of `abs`, in the metric's unit.
+    pub fn absolute(abs: f64, source: impl Into<String>) -> Self {
+        Tolerance {
+            abs,
+            source: source.into(),
+        }
+    }
+
+    /// No tolerance: the value must equal its reference (a count, or a yes/no check).
+    pub fn exact(source: impl Into<String>) -> Self {
+        Tolerance::absolute(0.0, source)
+    }
+
     /// A tolerance of `fraction` of the reference's magnitude.
     pub fn relative(fraction: f64, reference: f64, source: impl Into<String>) -> Self {
         Tolerance {
@@ -81,6 +94,19 @@ impl Metric {
         }
     }
 
+    /// A yes/no check: 1 if `ok`, else 0, judged against 1 with no tolerance, for the reason
+    /// `source`.
+    pub fn check(
+        case: &str,
+        name: impl Into<String>,
+        unit: &str,
+        ok: bool,
+        source: impl Into<String>,
+    ) -> Self {
+        Metric::new(case, name, unit, f64::from(u8::from(ok)))
+            .against(1.0, Tolerance::exact(source))
+    }
+
     /// With an analytic reference and its tolerance.
     pub fn against(mut self, reference: f64, tolerance: Tolerance) -> Self {
         self.reference = Some(reference);
@@ -140,5 +166,14 @@ mod tests {
             Some(false),
             "an unmeasured value fails its tolerance"
         );
+    }
+
+    #[test]
+    fn a_check_passes_only_when_true() {
+        let yes = Metric::check("c", "m", "yes", true, "exact");
+        let no = Metric::check("c", "m", "yes", false, "exact");
+        assert_eq!((yes.value, yes.pass()), (1.0, Some(true)));
+        assert_eq!((no.value, no.pass()), (0.0, Some(false)));
+        assert_eq!(yes.tolerance, Some(Tolerance::absolute(0.0, "exact")));
     }
 }

@@ -1,0 +1,146 @@
+//! The plots of the drop on a plate: the side view of each final state, the Eq. 23 maps of
+//! Fig. 3 with the simulated points, and θ12 along θ31 = 90°.
+
+use super::measure::PlateRun;
+use super::{SIGMA12, THETA31_DEG};
+use crate::analytic::eq23::{self, SolidContact};
+use crate::cases::views;
+use crate::report::plot::{self, Heatmap, ParticleView, Plot, Series, SeriesKind};
+use std::path::Path;
+
+/// Draws every plot of the case into `dir`, the particles seen at spacing `l0_m` [m].
+pub fn plots(runs: &[PlateRun], l0_m: f64, dir: &Path) -> anyhow::Result<()> {
+    for m in runs {
+        side_view(m, l0_m, dir)?;
+    }
+    let (identical, matte_slag): (Vec<&PlateRun>, Vec<&PlateRun>) =
+        runs.iter().partition(|m| m.run.id.starts_with("identical"));
+    map("fig3a", (0.4, 0.4), &identical, dir)?;
+    map("fig3b", (0.4, 0.2), &matte_slag, dir)?;
+    theta12_at_theta31_90(&identical, dir)
+}
+
+/// The measured θ12 [deg] of a run: NaN where none was measured.
+fn measured_theta12(m: &PlateRun) -> f64 {
+    match &m.theta12_deg {
+        Some(Ok(theta)) => *theta,
+        _ => f64::NAN,
+    }
+}
+
+/// The final state, slice |y| < l0 through the axis.
+fn side_view(m: &PlateRun, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
+    let liquids = &m.run.info.scene.liquids;
+    plot::draw_particles(
+        &ParticleView {
+            title: format!(
+                "{} at t = {:.0} ms (slice |y| < l0)",
+                m.run.id,
+                m.run.last.time_s * 1e3
+            ),
+            x_label: "x [mm]".into(),
+            y_label: "z [mm]".into(),
+            points: views::phase_slice(&m.run.last, l0_m, 2.5e-3, 2),
+            categories: vec![
+                liquids[0].name.clone(),
+                liquids[1].name.clone(),
+                "plate".into(),
+            ],
+            rects: vec![],
+            marker_px: 4,
+        },
+        &dir.join(format!("side_{}", m.run.id)),
+    )
+}
+
+/// Eq. 23's θ12 over (θ31, θ23) for surface tensions `(s1, s2)` [N/m], with `runs` on it.
+fn map(name: &str, (s1, s2): (f64, f64), runs: &[&PlateRun], dir: &Path) -> anyhow::Result<()> {
+    let grid: Vec<f64> = (0..=90).map(|k| k as f64 * 2.0).collect();
+    let map = eq23::theta12_map(s1, s2, SIGMA12, &grid, &grid).map_err(anyhow::Error::msg)?;
+    let z: Vec<Vec<Option<f64>>> = (0..grid.len())
+        .map(|iy| {
+            (0..grid.len())
+                .map(|ix| match map[ix][iy] {
+                    SolidContact::TripleLine { theta12_deg } => Some(theta12_deg),
+                    _ => None,
+                })
+                .collect()
+        })
+        .collect();
+    let overlay = runs
+        .iter()
+        .map(|m| {
+            let theta = measured_theta12(m);
+            let angle = if theta.is_finite() {
+                format!(", θ12 = {theta:.0}°")
+            } else {
+                String::new()
+            };
+            (
+                THETA31_DEG,
+                m.theta23_deg,
+                format!("sim: {}{angle}", m.seen),
+            )
+        })
+        .collect();
+    plot::draw_heatmap(
+        &Heatmap {
+            title: format!("Eq. 23: θ12 for σ1 = {s1}, σ2 = {s2}, σ12 = {SIGMA12} N/m"),
+            x_label: "θ31 [deg]".into(),
+            y_label: "θ23 [deg]".into(),
+            x: grid.clone(),
+            y: grid,
+            z,
+            none_label: "no solid/liquid/liquid line: one liquid spreads under the other".into(),
+            z_label: "θ12 [deg]".into(),
+            z_range: (0.0, 180.0),
+            overlay,
+        },
+        &dir.join(format!("theta12_map_{name}")),
+    )
+}
+
+/// θ12 along θ31 = 90° for identical liquids: Eq. 23's line and the runs where it was measured.
+fn theta12_at_theta31_90(identical: &[&PlateRun], dir: &Path) -> anyhow::Result<()> {
+    let line: Vec<(f64, f64)> = (0..=180)
+        .map(|k| k as f64)
+        .map(|th| {
+            (
+                th,
+                eq23::solid_contact(0.4, 0.4, SIGMA12, THETA31_DEG, th)
+                    .map(|c| c.theta12_deg())
+                    .unwrap_or(f64::NAN),
+            )
+        })
+        .collect();
+    let measured: Vec<(f64, f64)> = identical
+        .iter()
+        .filter(|m| m.theta12_deg.is_some())
+        .map(|m| (m.theta23_deg, measured_theta12(m)))
+        .collect();
+    plot::draw(
+        &Plot {
+            title: "θ12 at θ31 = 90° (identical liquids, σ12 = 0.1 N/m)".into(),
+            x_label: "θ23 [deg]".into(),
+            y_label: "θ12 [deg]".into(),
+            series: vec![
+                Series {
+                    label: "Eq. 23 (0°/180°: spreading, no line)".into(),
+                    points: line,
+                    kind: SeriesKind::Dashed,
+                    color: 0,
+                },
+                Series {
+                    label: "this project".into(),
+                    points: measured,
+                    kind: SeriesKind::Markers,
+                    color: 2,
+                },
+            ],
+            x_range: Some((0.0, 180.0)),
+            y_range: Some((0.0, 180.0)),
+            hlines: vec![],
+        },
+        &dir.join("theta12_theta31_90"),
+    )
+}

@@ -1,0 +1,8 @@
+//! How cases (and the accuracy–cost study) build their scenes: a typed builder on the solver's
+//! [`solver::Scene`], validated by the solver, and the materials of the papers.
+
+mod builder;
+mod materials;
+
+pub use builder::SceneBuilder;
+pub use materials::{sound_speed_for, LiquidProps, GRAVITY_M_S2, MATTE, SLAG};

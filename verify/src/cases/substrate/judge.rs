@@ -1,0 +1,36 @@
+//! The metric every run of paper B's cases shares: no liquid inside the plate.
+
+use super::Probe;
+use crate::suite::{Metric, RunData, Tolerance};
+use solver::scene::Setting;
+
+/// A setting's name as scene files write it (`natsui2021`).
+fn setting_name(setting: Setting) -> String {
+    serde_json::to_value(setting)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_string))
+        .unwrap_or_default()
+}
+
+/// The most liquid particles inside the plate at any output, judged against none.
+pub fn inside_plate_metric(case: &str, run: &RunData) -> Metric {
+    let setting = setting_name(run.info.scene.discretisation.setting);
+    let worst = Probe::InsidePlate
+        .series(run)
+        .into_iter()
+        .fold(0.0, f64::max);
+    Metric::new(
+        case,
+        format!("liquid particles inside the plate {}", run.id),
+        "-",
+        worst,
+    )
+    .against(
+        0.0,
+        Tolerance::exact("none may enter a wall (issue 5's invariant)"),
+    )
+    .run(run)
+    .note(format!(
+        "setting {setting}; most at any output (centre below the top wall layer's centres)"
+    ))
+}

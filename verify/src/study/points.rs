@@ -3,7 +3,7 @@
 use super::grid::{Point, Problem};
 use crate::measure::oscillation;
 use crate::output::run_info::{RunInfo, Status};
-use crate::output::timeseries::Table;
+use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -78,10 +78,10 @@ pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
     let ts = Table::read(&dir.join("timeseries.csv"))?;
     let reference = point.problem.reference();
     let l0 = point.l0();
-    let t = ts.column("time_s").unwrap_or_default();
+    let t = ts.run_column(RunColumn::Time);
     let (value, why) = match point.problem {
         Problem::CubeDrop => {
-            let q4 = ts.column("matte_q4").unwrap_or_default();
+            let q4 = ts.liquid_column("matte", LiquidColumn::Q4);
             // skip the corners' collapse (0.2 ms), as the cube_drop case does
             let from = t.iter().position(|&x| x >= 2e-4).unwrap_or(0);
             match oscillation::fit_damped_cosine(&t[from..], &q4[from..]) {
@@ -92,7 +92,7 @@ pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
         Problem::SessileDrop => {
             // top of the drop: highest particle centre + l0/2, the wall surface at z = 0;
             // mean over the last quarter of the run
-            let top = ts.column("matte_max_z_m").unwrap_or_default();
+            let top = ts.liquid_column("matte", LiquidColumn::Max(Axis::Z));
             let tail = &top[top.len() * 3 / 4..];
             if tail.is_empty() {
                 (f64::NAN, Some("no output".to_string()))

@@ -1,6 +1,7 @@
 //! `probes.csv`: the values a case records at every output time of its runs
 //! ([`Case::probe`]), if it records any.
 
+use crate::output::timeseries::RunColumn;
 use crate::output::RunError;
 use crate::run::{Observer, RunView};
 use crate::suite::Case;
@@ -30,7 +31,7 @@ impl Observer for Probes<'_> {
             let mut w = BufWriter::new(
                 File::create(&path).map_err(|e| RunError::io("cannot write", &path, e))?,
             );
-            writeln!(w, "time_s,{}", names.join(","))
+            writeln!(w, "{},{}", RunColumn::Time.name(), names.join(","))
                 .map_err(|e| RunError::io("cannot write", &path, e))?;
             self.file = Some((w, path));
         }

@@ -5,7 +5,7 @@
 //!
 //! Between fluid particles only: wall lanes are switched off.
 
-use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairTerm, Particle, CHUNK};
+use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The artificial viscosity term.
 #[derive(Clone, Copy, Debug)]
@@ -77,24 +77,24 @@ impl PairTerm for ArtificialViscosity<'_> {
         l.fluid[n] = !nb.is_wall;
     }
     #[inline(always)]
-    fn central(
+    fn pair(
         &self,
-        acc: f64,
+        s: &mut PairSums,
         own: &(f64, f64),
         l: &ArtificialLanes,
         n: usize,
         k: &PairKinematics,
-    ) -> f64 {
+    ) {
         let (m_i, rho_i) = *own;
         let phi = self.h_m * k.vr / (k.r2 + self.eta2_m2); // Eq. (13), Natsui 2021
                                                            // Eq. (12), Natsui 2021 with m_i m_j Π_ij
         let pi_ij = (-self.alpha1 * self.c_m_s * phi + self.alpha2 * phi * phi)
             / (0.5 * (rho_i + l.rho[n]));
         let v = m_i * l.m[n] * pi_ij * k.dw_r;
-        acc - if k.inside && l.fluid[n] && k.vr < 0.0 {
+        s.central -= if k.inside && l.fluid[n] && k.vr < 0.0 {
             v
         } else {
             0.0
-        }
+        };
     }
 }

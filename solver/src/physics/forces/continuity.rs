@@ -1,7 +1,7 @@
 //! The continuity density rate: `dρ_i/dt = ρ_i Σ_j V_j v_ij · ∇_i W_ij` [kg/(m³ s)]
 //! (the density scheme `continuity`; the loop multiplies the sum by `ρ_i`).
 
-use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairTerm, Particle, CHUNK};
+use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The continuity density rate.
 #[derive(Clone, Copy, Debug)]
@@ -34,8 +34,8 @@ impl PairTerm for ContinuityRate<'_> {
         l.vol[n] = self.vol[nb.j];
     }
     #[inline(always)]
-    fn rate(&self, acc: f64, _own: &(), l: &ContinuityLanes, n: usize, k: &PairKinematics) -> f64 {
+    fn pair(&self, s: &mut PairSums, _own: &(), l: &ContinuityLanes, n: usize, k: &PairKinematics) {
         let v = l.vol[n] * k.vr * k.dw_r; // V_j v_ij·∇_i W_ij
-        acc + if k.inside { v } else { 0.0 }
+        s.rate += if k.inside { v } else { 0.0 };
     }
 }

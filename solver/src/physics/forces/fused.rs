@@ -7,7 +7,9 @@
 //! per particle in the fixed order of its neighbour list, so the result is bitwise identical
 //! for any thread count.
 
-use super::term::{Lanes, Neighbour, Neighbourhood, PairKinematics, PairTerm, Particle, CHUNK};
+use super::term::{
+    Lanes, Neighbour, Neighbourhood, PairKinematics, PairSums, PairTerm, Particle, CHUNK,
+};
 use crate::kernel::Kernel;
 use crate::neighbours::{NeighbourLists, ACTIVE_BITS};
 use crate::state::Vec3;
@@ -149,10 +151,12 @@ fn particle<K: Kernel, T: PairTerm>(
                 dw_r: k.dw_dr_inside(r.min(support)) * ir, // dW/dr / r [1/m⁵]
                 vr: rel.vx[n] * rel.dx[n] + rel.vy[n] * rel.dy[n] + rel.vz[n] * rel.dz[n],
             };
-            ca[n] = terms.central(0.0, &own, &s.lanes, n, &kin);
-            cb[n] = terms.shear(0.0, &own, &s.lanes, n, &kin);
+            let mut sums = PairSums::default();
+            terms.pair(&mut sums, &own, &s.lanes, n, &kin);
+            ca[n] = sums.central;
+            cb[n] = sums.shear;
             if T::RATE {
-                cd[n] = terms.rate(0.0, &own, &s.lanes, n, &kin);
+                cd[n] = sums.rate;
             }
         }
         for n in 0..chunk.len() {

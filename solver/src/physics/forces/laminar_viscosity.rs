@@ -5,7 +5,7 @@
 //!
 //! Free-slip walls take no part: their lanes carry `μ = 0`.
 
-use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairTerm, Particle, CHUNK};
+use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The laminar viscosity term.
 #[derive(Clone, Copy, Debug)]
@@ -66,16 +66,16 @@ impl<'a> PairTerm for LaminarViscosity<'a> {
         l.mu[n] = if coupled { own.mu_row[nb.phase] } else { 0.0 };
     }
     #[inline(always)]
-    fn shear(
+    fn pair(
         &self,
-        acc: f64,
+        s: &mut PairSums,
         own: &LaminarOwn<'a>,
         l: &LaminarLanes,
         n: usize,
         k: &PairKinematics,
-    ) -> f64 {
+    ) {
         // Eq. (11), Natsui 2021: 2μiμj/(μi+μj) (V_i² + V_j²) (dW/dr / r) v_ij
         let v = l.mu[n] * (own.v2 + l.v2[n]) * k.dw_r;
-        acc + if k.inside { v } else { 0.0 }
+        s.shear += if k.inside { v } else { 0.0 };
     }
 }

@@ -4,7 +4,7 @@
 //! Acting on wall neighbours too, with the walls' extrapolated pressure (Adami et al. 2012):
 //! that is what keeps the liquid out of a wall.
 
-use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairTerm, Particle, CHUNK};
+use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The pressure term.
 #[derive(Clone, Copy, Debug)]
@@ -42,15 +42,8 @@ impl PairTerm for Pressure<'_> {
         l.pv[n] = self.pressure[nb.j] * v_j * v_j;
     }
     #[inline(always)]
-    fn central(
-        &self,
-        acc: f64,
-        pv_i: &f64,
-        l: &PressureLanes,
-        n: usize,
-        k: &PairKinematics,
-    ) -> f64 {
+    fn pair(&self, s: &mut PairSums, pv_i: &f64, l: &PressureLanes, n: usize, k: &PairKinematics) {
         let v = (pv_i + l.pv[n]) * k.dw_r; // Eq. (11), Natsui 2021: −(p_i V_i² + p_j V_j²) ∇_i W_ij
-        acc - if k.inside { v } else { 0.0 }
+        s.central -= if k.inside { v } else { 0.0 };
     }
 }

@@ -3,8 +3,8 @@
 //! A term (pressure, a viscosity, the potential, …) is a type implementing [`PairTerm`]. The
 //! loop gathers the neighbours of particle `i` in chunks; for each chunk every term first
 //! gathers what it needs of each neighbour `j` into its own lanes, then, for every pair, adds
-//! its part to up to three sums: the coefficient `a_ij` of `x_i − x_j` (central forces), the
-//! coefficient `b_ij` of `v_i − v_j` (viscous shear), and the density rate. The pair force is
+//! its parts to three sums ([`PairSums`]): the coefficient `a_ij` of `x_i − x_j` (central
+//! forces), the coefficient `b_ij` of `v_i − v_j` (viscous shear), and the density rate. The pair force is
 //! `a_ij (x_i − x_j) + b_ij (v_i − v_j)` with `a_ij = a_ji`, `b_ij = b_ji`, so `F_ji = −F_ij`
 //! to the last bit.
 //!
@@ -79,6 +79,17 @@ pub struct PairKinematics {
     pub vr: f64,
 }
 
+/// The sums one pair contributes to, each added to by the terms in list order.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PairSums {
+    /// Coefficient `a_ij` [N/m] of `x_i − x_j` in the force on `i` (central forces).
+    pub central: f64,
+    /// Coefficient `b_ij` [N·s/m] of `v_i − v_j` in the force on `i` (viscous shear).
+    pub shear: f64,
+    /// The pair's part of `Σ_j (…)` in `dρ_i/dt = ρ_i Σ_j (…)` [1/s].
+    pub rate: f64,
+}
+
 /// Gathered per-neighbour data of a term: created once per rayon job, refilled per chunk.
 pub trait Lanes: Send {
     /// Buffers whose unused lanes hold harmless values (lanes past a chunk's end are computed
@@ -120,44 +131,17 @@ pub trait PairTerm: Sync {
     #[inline(always)]
     fn gather(&self, _own: &Self::Own, _lanes: &mut Self::Lanes, _n: usize, _nb: Neighbour) {}
 
-    /// Adds the term's part of the central coefficient `a_ij` [N/m] of lane `n` to `acc`.
+    /// Adds the term's parts of the pair sums of lane `n` to `sums`, in the sign convention of
+    /// [`PairSums`].
     #[inline(always)]
-    fn central(
+    fn pair(
         &self,
-        acc: f64,
+        _sums: &mut PairSums,
         _own: &Self::Own,
         _lanes: &Self::Lanes,
         _n: usize,
         _k: &PairKinematics,
-    ) -> f64 {
-        acc
-    }
-
-    /// Adds the term's part of the shear coefficient `b_ij` [N·s/m] of lane `n` to `acc`.
-    #[inline(always)]
-    fn shear(
-        &self,
-        acc: f64,
-        _own: &Self::Own,
-        _lanes: &Self::Lanes,
-        _n: usize,
-        _k: &PairKinematics,
-    ) -> f64 {
-        acc
-    }
-
-    /// Adds the term's part of `Σ_j (…)` of the density rate `dρ_i/dt = ρ_i Σ_j (…)` [1/s] of
-    /// lane `n` to `acc`.
-    #[inline(always)]
-    fn rate(
-        &self,
-        acc: f64,
-        _own: &Self::Own,
-        _lanes: &Self::Lanes,
-        _n: usize,
-        _k: &PairKinematics,
-    ) -> f64 {
-        acc
+    ) {
     }
 
     /// Adds the force [N] of the far neighbours `far` (beyond the support) of the particle at
@@ -201,63 +185,19 @@ impl<A: PairTerm, B: PairTerm> PairTerm for (A, B) {
         }
     }
     #[inline(always)]
-    fn central(
+    fn pair(
         &self,
-        acc: f64,
+        sums: &mut PairSums,
         own: &Self::Own,
         l: &Self::Lanes,
         n: usize,
         k: &PairKinematics,
-    ) -> f64 {
-        let acc = if A::ON {
-            self.0.central(acc, &own.0, &l.0, n, k)
-        } else {
-            acc
-        };
-        if B::ON {
-            self.1.central(acc, &own.1, &l.1, n, k)
-        } else {
-            acc
+    ) {
+        if A::ON {
+            self.0.pair(sums, &own.0, &l.0, n, k);
         }
-    }
-    #[inline(always)]
-    fn shear(
-        &self,
-        acc: f64,
-        own: &Self::Own,
-        l: &Self::Lanes,
-        n: usize,
-        k: &PairKinematics,
-    ) -> f64 {
-        let acc = if A::ON {
-            self.0.shear(acc, &own.0, &l.0, n, k)
-        } else {
-            acc
-        };
         if B::ON {
-            self.1.shear(acc, &own.1, &l.1, n, k)
-        } else {
-            acc
-        }
-    }
-    #[inline(always)]
-    fn rate(
-        &self,
-        acc: f64,
-        own: &Self::Own,
-        l: &Self::Lanes,
-        n: usize,
-        k: &PairKinematics,
-    ) -> f64 {
-        let acc = if A::ON {
-            self.0.rate(acc, &own.0, &l.0, n, k)
-        } else {
-            acc
-        };
-        if B::ON {
-            self.1.rate(acc, &own.1, &l.1, n, k)
-        } else {
-            acc
+            self.1.pair(sums, &own.1, &l.1, n, k);
         }
     }
     #[inline(always)]

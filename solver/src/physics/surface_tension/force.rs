@@ -11,7 +11,7 @@
 
 use super::potential::Kondo2007Potential;
 use crate::physics::forces::term::{
-    Lane, Lanes, Neighbour, PairKinematics, PairTerm, Particle, CHUNK,
+    Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK,
 };
 use crate::state::Vec3;
 
@@ -56,18 +56,18 @@ impl<'a> PairTerm for PairwisePotential<'a> {
         l.c[n] = row[nb.phase];
     }
     #[inline(always)]
-    fn central(
+    fn pair(
         &self,
-        acc: f64,
+        s: &mut PairSums,
         _row: &&'a [f64],
         l: &PotentialLanes,
         n: usize,
         k: &PairKinematics,
-    ) -> f64 {
+    ) {
         let r_e = self.potential.r_e_m;
         // C_ij P'(r) e_ij: the force along x_ij per metre of x_ij
         let v = self.potential.pair_force_inside(l.c[n], k.r) * k.ir;
-        acc + if k.apart && k.r2 < r_e * r_e { v } else { 0.0 }
+        s.central += if k.apart && k.r2 < r_e * r_e { v } else { 0.0 };
     }
     #[inline(always)]
     fn far(&self, row: &&'a [f64], f: &mut Vec3, pi: Vec3, far: &[u32]) {

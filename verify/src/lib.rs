@@ -11,6 +11,7 @@
 
 pub mod analytic;
 pub mod cases;
+pub mod diagnostics;
 pub mod measure;
 pub mod output;
 pub mod report;

@@ -47,4 +47,16 @@ impl Kernel for CubicSpline {
         };
         self.norm * self.inv_h * d
     }
+    #[inline(always)]
+    fn d2w_dr2(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        let d = if q < 1.0 {
+            -3.0 + 4.5 * q
+        } else if q < 2.0 {
+            1.5 * (2.0 - q)
+        } else {
+            0.0
+        };
+        self.norm * self.inv_h * self.inv_h * d
+    }
 }

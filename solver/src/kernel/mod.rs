@@ -27,6 +27,9 @@ pub trait Kernel: Copy + Send + Sync + 'static {
     fn w(&self, r_m: f64) -> f64;
     /// Radial derivative `dW/dr` [1/m⁴] at distance `r_m` [m] (≤ 0; 0 outside the support).
     fn dw_dr(&self, r_m: f64) -> f64;
+    /// Second radial derivative `d²W/dr²` [1/m⁵] at distance `r_m` [m] (0 outside the
+    /// support): for the elastic moduli of the particle lattice, not used by the step.
+    fn d2w_dr2(&self, r_m: f64) -> f64;
     /// `W(r)` for `r` within the support, without the support test (branch-free where the
     /// kernel allows, for vectorised loops); equal to [`Kernel::w`] there.
     #[inline(always)]
@@ -155,6 +158,21 @@ mod tests {
                 r / h
             );
         }
+        // d²W/dr² against a central difference of dW/dr, with the same step and bound
+        let scale2 = (0..200)
+            .map(|s| k.d2w_dr2(s as f64 / 200.0 * k.support_m()).abs())
+            .fold(0.0, f64::max);
+        for s in 1..400 {
+            let r = s as f64 / 400.0 * k.support_m();
+            let fd = (k.dw_dr(r + eps) - k.dw_dr(r - eps)) / (2.0 * eps);
+            let an = k.d2w_dr2(r);
+            assert!(
+                (fd - an).abs() < 1e-6 * scale2,
+                "{kind:?} at r/h = {}: d²W/dr² analytic {an}, finite difference {fd}",
+                r / h
+            );
+        }
+        assert_eq!(k.d2w_dr2(k.support_m() * 1.0001), 0.0);
         // The branch-free evaluation agrees with W inside the support, bit for bit.
         for s in 0..1000 {
             let r = s as f64 / 1000.0 * k.support_m();

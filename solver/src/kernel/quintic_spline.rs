@@ -47,4 +47,14 @@ impl Kernel for QuinticSpline {
         let p4 = |x: f64| x * x * x * x;
         -5.0 * self.norm * self.inv_h * (p4(a) - 6.0 * p4(b) + 15.0 * p4(c))
     }
+    #[inline(always)]
+    fn d2w_dr2(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        if q >= 3.0 {
+            return 0.0;
+        }
+        let (a, b, c) = (pos(3.0 - q), pos(2.0 - q), pos(1.0 - q));
+        let p3 = |x: f64| x * x * x;
+        20.0 * self.norm * self.inv_h * self.inv_h * (p3(a) - 6.0 * p3(b) + 15.0 * p3(c))
+    }
 }

@@ -54,4 +54,14 @@ impl Kernel for WendlandC2 {
         // d/dr of Eq. (5): −105/(16π h⁴) q (1 − q/2)³ = −5 q · norm/h · (1 − q/2)³
         -5.0 * self.norm * self.inv_h * q * a * a * a
     }
+    #[inline(always)]
+    fn d2w_dr2(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        if q >= 2.0 {
+            return 0.0;
+        }
+        let a = 1.0 - 0.5 * q;
+        // d/dq [−5 q (1 − q/2)³] = −5 (1 − q/2)² (1 − 2q)
+        -5.0 * self.norm * self.inv_h * self.inv_h * a * a * (1.0 - 2.0 * q)
+    }
 }

@@ -57,4 +57,15 @@ impl Kernel for WendlandC4 {
         // d/dq [(1 − q/2)⁶ (35q²/12 + 3q + 1)] = −(14/3) q (1 + 5q/2) (1 − q/2)⁵
         -self.norm * self.inv_h * (14.0 / 3.0) * q * (1.0 + 2.5 * q) * a5
     }
+    #[inline(always)]
+    fn d2w_dr2(&self, r_m: f64) -> f64 {
+        let q = r_m * self.inv_h;
+        if q >= 2.0 {
+            return 0.0;
+        }
+        let a = 1.0 - 0.5 * q;
+        let a4 = a * a * a * a;
+        // d/dq [−(14/3) q (1 + 5q/2) (1 − q/2)⁵] = −(14/3) (1 − q/2)⁴ (1 + 2q − 35q²/4)
+        -self.norm * self.inv_h * self.inv_h * (14.0 / 3.0) * a4 * (1.0 + 2.0 * q - 8.75 * q * q)
+    }
 }

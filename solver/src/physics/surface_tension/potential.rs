@@ -33,6 +33,16 @@ impl Kondo2007Potential {
         self.pair_force_inside(1.0, r_m)
     }
 
+    /// Second derivative `P''(r) = 2r − l0 − r_e` [m] (0 beyond `r_e`; at `r_e` itself the
+    /// value from inside, `r_e − l0`: `P''` jumps there): for the elastic moduli of the
+    /// particle lattice, not used by the step.
+    pub fn d2p_dr2(&self, r_m: f64) -> f64 {
+        if r_m > self.r_e_m {
+            return 0.0;
+        }
+        2.0 * r_m - self.l0_m - self.r_e_m
+    }
+
     /// The pair force magnitude `C P'(r)` [N] of a pair with coefficient `c` [N/m²] at a
     /// distance `r < r_e` [m] (no cut-off test: the force loop masks its lanes itself).
     /// Positive is attractive. The one place `P'` is written.

@@ -1,0 +1,4 @@
+//! Diagnostics of the discretisation itself, independent of any paper check: how far the
+//! particle system is from a liquid.
+
+pub mod lattice_moduli;

@@ -1,10 +1,12 @@
 //! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in the README.
 
 use clap::{Parser, Subcommand};
+use solver::kernel::KernelKind;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use verify::cases;
+use verify::diagnostics::lattice_moduli;
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
 use verify::study::{run_all, StudyOptions};
@@ -167,12 +169,53 @@ enum Command {
         #[command(subcommand)]
         which: StudyKind,
     },
+    /// The shear moduli G44 and C' [σ/l0] of the reference particle lattice (potential and
+    /// pressure term) for kernels × h/l0 × r_e/l0: a liquid has both at zero.
+    LatticeModuli {
+        /// Kernels.
+        #[arg(long, value_enum, value_delimiter = ',', default_value = "wendland-c2")]
+        kernel: Vec<KernelArg>,
+        /// Smoothing lengths h/l0.
+        #[arg(
+            long = "h",
+            value_delimiter = ',',
+            default_value = "1.05,1.2,1.3,1.5,2.0"
+        )]
+        h_over_l0: Vec<f64>,
+        /// Potential cut-offs r_e/l0.
+        #[arg(
+            long = "re",
+            value_delimiter = ',',
+            default_value = "2.1,3.1,4.0,4.2,5.6"
+        )]
+        re_over_l0: Vec<f64>,
+    },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
         /// Output folder of a previous suite run.
         #[arg(long, default_value = "reports")]
         out: PathBuf,
     },
+}
+
+/// A kernel on the command line.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum KernelArg {
+    WendlandC2,
+    WendlandC4,
+    CubicSpline,
+    QuinticSpline,
+}
+
+impl From<KernelArg> for KernelKind {
+    fn from(k: KernelArg) -> KernelKind {
+        match k {
+            KernelArg::WendlandC2 => KernelKind::WendlandC2,
+            KernelArg::WendlandC4 => KernelKind::WendlandC4,
+            KernelArg::CubicSpline => KernelKind::CubicSpline,
+            KernelArg::QuinticSpline => KernelKind::QuinticSpline,
+        }
+    }
 }
 
 #[derive(Subcommand)]
@@ -210,6 +253,18 @@ fn main() {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
         }
         Command::Report { out } => exit_of(report(&out)),
+        Command::LatticeModuli {
+            kernel,
+            h_over_l0,
+            re_over_l0,
+        } => {
+            let kernels: Vec<KernelKind> = kernel.into_iter().map(KernelKind::from).collect();
+            print!(
+                "{}",
+                lattice_moduli::table(&kernels, &h_over_l0, &re_over_l0)
+            );
+            0
+        }
         Command::Study {
             which:
                 StudyKind::AccuracyCost {

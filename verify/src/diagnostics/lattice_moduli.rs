@@ -278,6 +278,35 @@ pub fn shear_stress(
     })
 }
 
+/// A markdown table of the lattice's elasticity for every kernel × `h/l0` × `r_e/l0`.
+pub fn table(kernels: &[KernelKind], h_over_l0: &[f64], re_over_l0: &[f64]) -> String {
+    let mut out = String::from(
+        "| kernel | h/l0 | r_e/l0 | S/l0³ | p_b [σ/l0] | G44 potential | C′ potential | G44 pressure | C′ pressure | **G44 total** | **C′ total** |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for &kernel in kernels {
+        for &re in re_over_l0 {
+            for &h in h_over_l0 {
+                let e = lattice_elasticity(kernel, h, re);
+                let t = e.total();
+                out.push_str(&format!(
+                    "| {} | {h} | {re} | {:.4} | {:.3} | {:+.3} | {:+.3} | {:+.3} | {:+.3} | **{:+.3}** | **{:+.3}** |\n",
+                    kernel.name(),
+                    e.surface_sum,
+                    e.background_pressure,
+                    e.potential.g44,
+                    e.potential.c_prime,
+                    e.pressure.g44,
+                    e.pressure.c_prime,
+                    t.g44,
+                    t.c_prime
+                ));
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -132,6 +132,19 @@ fn cube_drop_smoke() {
 }
 
 #[test]
+fn drop_oscillation_smoke() {
+    let (m, out) = run("drop_oscillation");
+    // the l = 2 oscillation of Q2 must be fitted (a failed fit gives NaN); how far its period
+    // and damping are from Rayleigh's and Lamb's is the measurement, kept by the snapshot
+    for name in ["period ε=0.10", "damping ε=0.10"] {
+        let v = m.iter().find(|x| x.name == name).map(|x| x.value);
+        assert!(v.is_some_and(f64::is_finite), "{name}: {v:?}");
+    }
+    insta::assert_snapshot!("drop_oscillation", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
 fn equal_doublet_smoke() {
     let (m, out) = run("equal_doublet");
     // G1G2/R0 at σ12 = 0.4 against the analytic doublet, within half a spacing plus the

@@ -148,9 +148,10 @@ pub struct Discretisation {
     /// Cut-off of the interparticle potential over spacing, `r_e/l0` [-]. Default 4.2 (4.0 with
     /// `setting = "natsui2016"`), the
     /// 2021 paper's formula read literally (physics.md §4 leaves 2.1 vs 4.2 open). Chosen by
-    /// measurement: at 2.1 the potential gives the particle lattice a shear modulus of
-    /// 1.88 σ/l0 — about 14 σ/R for a 12³ drop — and drops do not flow; at 4.2 it is
-    /// 0.06 σ/l0 and the cube drop oscillates within 6 % of Lamb's period at 15³.
+    /// measurement: at 2.1 the particle lattice has a shear modulus G44 of 2.0 σ/l0 (potential
+    /// and pressure term) — about 14 σ/R for a 12³ drop — and drops do not flow; at 4.2 it is
+    /// 0.126 σ/l0 (C′ = 0.047 σ/l0) and the cube drop oscillates within 6 % of Lamb's period
+    /// at 15³.
     #[serde(default = "default_re_over_l0")]
     pub re_over_l0: f64,
     /// Artificial speed of sound `c` [m/s], the same for all phases (Tait EOS, Eq. 14).

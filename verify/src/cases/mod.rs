@@ -3,6 +3,7 @@
 mod analysis;
 mod cube_drop;
 mod doublet;
+mod drop_oscillation;
 mod hard_cases;
 mod impact;
 mod incline;
@@ -19,6 +20,7 @@ use crate::suite::Case;
 pub fn all() -> Vec<Box<dyn Case>> {
     vec![
         Box::new(cube_drop::CubeDrop),
+        Box::new(drop_oscillation::DropOscillation),
         Box::new(doublet::Doublet(doublet::Pair::Equal)),
         Box::new(doublet::Doublet(doublet::Pair::MatteSlag)),
         Box::new(plate_eq23::PlateEq23),

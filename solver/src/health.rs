@@ -1,6 +1,8 @@
 //! Early detection of a run going wrong, with a diagnosis.
 //!
-//! After every step the state is checked against the scene's [`crate::scene::Health`] bounds.
+//! After every step the state is checked against the scene's [`crate::scene::Health`] bounds:
+//! non-finite values, speed (Mach), compression, liquid inside a wall ([`crate::model::WallSolid`],
+//! the rule the harness's invariants use too), and a collapsing adaptive step.
 //! A run that fails stops with [`SimError::Unstable`]: the step, the particle (its scene index),
 //! the quantity with its value, and the most likely cause with the value it would need.
 
@@ -166,6 +168,21 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
             ),
         ));
     }
+    if let Some((i, w)) = wall_entry(m, p, h.max_wall_depth_over_l0 * m.l0_m) {
+        let x = p.pos[i];
+        return Err(fail(
+            i,
+            format!(
+                "liquid particle inside wall '{}' at ({:.4e}, {:.4e}, {:.4e}) m, more than {} l0 past its faces (health.max_wall_depth_over_l0 = {})",
+                m.walls[w].name, x.x, x.y, x.z, h.max_wall_depth_over_l0, h.max_wall_depth_over_l0
+            ),
+            format!(
+                "the walls' pressure does not hold the liquid out of the gaps between wall particles: with a wide kernel (h = {:.2} l0) the pressure gradient at the nearest-neighbour distance is weak, and the potential's cohesion pulls a wetting liquid in; use h_over_l0 ≈ 1.05 (discretisation.setting = \"natsui2021\") or raise discretisation.sound_speed (now {} m/s); health.max_wall_depth_over_l0 = inf lets the run go on",
+                m.h_m / m.l0_m,
+                m.c_m_s
+            ),
+        ));
+    }
     if m.time.dt.is_none() && c.first_dt_s > 0.0 && stable < h.min_dt_ratio * c.first_dt_s {
         let (a2, ia) = c.extremes.acc2;
         return Err(fail(
@@ -193,4 +210,19 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
         }
     }
     Ok(())
+}
+
+/// The first fluid particle (lowest index: the same for any thread count) inside a wall deeper
+/// than `depth_m` [m], with the wall's index.
+fn wall_entry(m: &Model, p: &Particles, depth_m: f64) -> Option<(usize, usize)> {
+    if m.walls.is_empty() || !depth_m.is_finite() {
+        return None;
+    }
+    (0..p.n_fluid).into_par_iter().find_map_first(|i| {
+        let x = p.pos[i];
+        m.walls
+            .iter()
+            .position(|w| w.holds([x.x, x.y, x.z], depth_m))
+            .map(|w| (i, w))
+    })
 }

@@ -4,8 +4,10 @@
 
 mod effects;
 pub mod pairs;
+mod walls;
 
 pub use effects::Effects;
+pub use walls::WallSolid;
 
 use crate::kernel::{Kernel, KernelKind};
 use crate::lattice;
@@ -65,6 +67,8 @@ pub struct Model {
     pub health: Health,
     /// Verlet skin of the neighbour lists [m].
     pub neighbour_skin_m: f64,
+    /// The walls as solids liquid must stay out of (the health check's wall entry).
+    pub walls: Vec<WallSolid>,
     /// The largest interaction radius [m]: `r_e` with interfacial tension if larger than the
     /// kernel support, else the support.
     pub interaction_radius_m: f64,
@@ -157,6 +161,7 @@ impl Model {
             health: scene.health.clone(),
             neighbour_skin_m: d.neighbour_skin_over_l0 * l0,
             interaction_radius_m,
+            walls: WallSolid::of(scene),
         })
     }
 

@@ -106,6 +106,11 @@ pub struct Health {
     /// Smallest adaptive step as a fraction of the first step [-]. Default 1e-3.
     #[serde(default = "default_min_dt_ratio")]
     pub min_dt_ratio: f64,
+    /// Deepest a liquid particle may be inside a wall's solid, past its faces, in spacings
+    /// [l0]. Default 0.5: the plane of the outer wall layer's centres, which a liquid particle
+    /// in compressed contact does not pass; one that does has entered the wall lattice.
+    #[serde(default = "default_max_wall_depth_over_l0")]
+    pub max_wall_depth_over_l0: f64,
 }
 
 fn default_max_mach() -> f64 {
@@ -118,12 +123,17 @@ fn default_min_dt_ratio() -> f64 {
     1e-3
 }
 
+fn default_max_wall_depth_over_l0() -> f64 {
+    0.5
+}
+
 impl Default for Health {
     fn default() -> Self {
         Self {
             max_mach: default_max_mach(),
             max_compression: default_max_compression(),
             min_dt_ratio: default_min_dt_ratio(),
+            max_wall_depth_over_l0: default_max_wall_depth_over_l0(),
         }
     }
 }

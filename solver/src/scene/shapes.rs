@@ -320,6 +320,19 @@ impl WallShape {
         }
     }
 
+    /// The solid a liquid particle must stay out of: this shape, except that a disk's rim is
+    /// pulled in by `l0_m` [m] (a lattice disk's rim is a staircase within `l0/√2` of the
+    /// circle, along which liquid may legitimately run down the side).
+    pub fn liquid_exclusion(&self, l0_m: f64) -> WallShape {
+        match self.clone() {
+            WallShape::Disk { center, radius } => WallShape::Disk {
+                center,
+                radius: radius - l0_m,
+            },
+            s => s,
+        }
+    }
+
     /// The planes that must be lattice planes, as `(field, value)`.
     pub(crate) fn lattice_planes(&self) -> Vec<(&'static str, f64)> {
         match *self {

@@ -233,7 +233,16 @@ fn time(s: &Scene) -> R {
         0.0,
         1.0,
         "the smallest step over the first step",
-    )
+    )?;
+    // not NaN (a NaN bound would pass every particle silently); infinity switches the check off
+    if h.max_wall_depth_over_l0.is_nan() || h.max_wall_depth_over_l0 < 0.0 {
+        return Err(SceneError::invalid(
+            "health.max_wall_depth_over_l0",
+            h.max_wall_depth_over_l0,
+            "a depth in spacings, ≥ 0 (inf switches the check off)",
+        ));
+    }
+    Ok(())
 }
 
 fn effects(s: &Scene) -> R {

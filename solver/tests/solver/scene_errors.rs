@@ -230,3 +230,18 @@ fn setting_supplies_defaults_and_explicit_values_win() {
         &["setting", "natsui2019", "line"],
     );
 }
+
+#[test]
+fn negative_or_undefined_wall_depth_bound() {
+    for v in ["-1.0", "nan"] {
+        assert_names(
+            &block_scene(
+                6,
+                1e-4,
+                BASE_EFFECTS,
+                &format!("[health]\nmax_wall_depth_over_l0 = {v}\n"),
+            ),
+            &["health.max_wall_depth_over_l0", "≥ 0"],
+        );
+    }
+}

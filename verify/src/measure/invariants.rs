@@ -1,8 +1,9 @@
 //! Invariants of a healthy run, measured on its outputs: one connected body, no clumping, no
 //! particle inside a wall, conserved counts, mass and momentum, bounded energy.
 
+use solver::model::WallSolid;
 use solver::neighbours::NeighbourSearch;
-use solver::scene::{Scene, WallShape};
+use solver::scene::Scene;
 use solver::state::Vec3;
 
 /// Number of connected bodies: particles closer than `link_m` [m] belong to the same body.
@@ -64,32 +65,14 @@ pub fn clumped_fraction(points: &[[f64; 3]], l0_m: f64) -> f64 {
 }
 
 /// Liquid particles inside a wall of `scene`: deeper than half a spacing past a face, and more
-/// than one spacing inside a disk's rim (a lattice disk's rim is a staircase within l0/√2 of
-/// the circle, along which liquid may legitimately run down the side).
+/// than one spacing inside a disk's rim — the rule of the solver's wall-entry health check
+/// ([`WallSolid`]).
 pub fn inside_walls(points: &[[f64; 3]], scene: &Scene) -> usize {
-    let l0 = scene.discretisation.l0;
-    let shapes: Vec<(WallShape, f64)> = scene
-        .walls
-        .iter()
-        .map(|w| {
-            let t = scene.wall_layers(w) as f64 * l0;
-            let shape = match w.shape.clone() {
-                WallShape::Disk { center, radius } => WallShape::Disk {
-                    center,
-                    radius: radius - l0,
-                },
-                s => s,
-            };
-            (shape, t)
-        })
-        .collect();
+    let half = 0.5 * scene.discretisation.l0;
+    let walls = WallSolid::of(scene);
     points
         .iter()
-        .filter(|p| {
-            shapes
-                .iter()
-                .any(|(s, t)| s.solid_contains(**p, *t, 0.5 * l0))
-        })
+        .filter(|p| walls.iter().any(|w| w.holds(**p, half)))
         .count()
 }
 

@@ -141,8 +141,9 @@ pub const REACH: i64 = 2;
 const ROWS: usize = ((2 * REACH + 1) * (2 * REACH + 1)) as usize;
 
 impl NeighbourSearch {
-    /// A search for the given radii [m] and skin [m]; `wall_pos` must already be sorted with
-    /// [`NeighbourSearch::sort_walls`] order (see [`crate::setup`]).
+    /// A search for the given radii \[m\] and skin \[m\]; the particles it builds lists for
+    /// must be in [`NeighbourSearch::sort_order`] (the simulation sorts the walls once and the
+    /// fluid at every rebuild).
     pub fn new(near_radius_m: f64, far_radius_m: f64, skin_m: f64) -> Self {
         let far = far_radius_m.max(near_radius_m);
         Self {

@@ -6,7 +6,7 @@
 //!    predictor);
 //! 3. rebuild the neighbour lists if a particle moved half the skin (re-sorting by cell);
 //! 4. density (summation), EOS, wall pressures, pair forces → `a_{n+1}` (velocities at the
-//!    half step enter the viscous terms) — [`evaluate`];
+//!    half step enter the viscous terms) — `evaluate.rs`;
 //! 5. kick: `v ← v + ½dt a_{n+1}` (continuity: trapezoidal corrector `ρ ← ρ + ½dt (D_{n+1} −
 //!    D_n)`), health check, and periodic density re-initialisation.
 //!

@@ -22,7 +22,7 @@ pub struct LaminarViscosity<'a> {
     pub wall_no_slip: &'a [bool],
 }
 
-/// Per neighbour: the pair viscosity [Pa·s] (zero against a free-slip wall) and `V_j²` [m⁶].
+/// Per neighbour: the pair viscosity [Pa·s] (zero against a free-slip wall) and `V_j²` \[m⁶\].
 pub struct LaminarLanes {
     mu: Lane<f64>,
     v2: Lane<f64>,
@@ -37,7 +37,7 @@ impl Lanes for LaminarLanes {
     }
 }
 
-/// Of particle `i`: `V_i²` [m⁶] and its row of pair viscosities [Pa·s].
+/// Of particle `i`: `V_i²` \[m⁶\] and its row of pair viscosities [Pa·s].
 #[derive(Clone, Copy)]
 pub struct LaminarOwn<'a> {
     v2: f64,

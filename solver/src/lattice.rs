@@ -82,6 +82,24 @@ pub fn bulk_potential_sum(p: &Kondo2007Potential) -> f64 {
     s
 }
 
+/// The potential's virial sum `Σ_{j≠i} r_ij P'(r_ij)` over the bulk lattice [m³]: the
+/// potential's virial pressure is `C/(6 l0³)` times it (negative: cohesion).
+pub fn potential_virial_sum(p: &Kondo2007Potential) -> f64 {
+    let n = (p.r_e_m / p.l0_m).ceil() as i64 + 1;
+    let mut s = 0.0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                let r = p.l0_m * ((i * i + j * j + k * k) as f64).sqrt();
+                if r > 0.0 {
+                    s += r * p.dp_dr(r);
+                }
+            }
+        }
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,6 +18,8 @@ pub struct Effects {
     pub walls: bool,
     /// Some wall is no-slip.
     pub no_slip_walls: bool,
+    /// The short-range liquid–wall repulsion (Monaghan 1994).
+    pub wall_repulsion: bool,
     /// Density scheme.
     pub density: DensityScheme,
     /// Density re-initialisation `(filter, every n steps)`, if any.
@@ -39,6 +41,7 @@ impl Effects {
                 .map(|a| (a.alpha1, a.alpha2)),
             interfacial_tension: e.interfacial_tension,
             walls: !scene.walls.is_empty(),
+            wall_repulsion: e.wall_repulsion,
             no_slip_walls: scene
                 .walls
                 .iter()
@@ -84,6 +87,9 @@ impl Effects {
                 ""
             };
             v.push(format!("walls ({slip}){wet}"));
+        }
+        if self.wall_repulsion {
+            v.push("liquid–wall repulsion (Monaghan 1994, range 0.8 l0)".into());
         }
         v.push(match self.density {
             DensityScheme::Summation => "density: summation".into(),

@@ -12,6 +12,7 @@ pub use walls::WallSolid;
 use crate::kernel::{Kernel, KernelKind};
 use crate::lattice;
 use crate::physics::eos::TaitEos;
+use crate::physics::forces::wall_repulsion as repulsion;
 use crate::physics::surface_tension::{Kondo2007Potential, PairTable};
 use crate::scene::{Health, ParticleMass, Scene, SceneError, TimeControl};
 use crate::state::Vec3;
@@ -67,6 +68,12 @@ pub struct Model {
     pub health: Health,
     /// Verlet skin of the neighbour lists [m].
     pub neighbour_skin_m: f64,
+    /// Strength `D` of the liquid–wall repulsion per phase [J] (zero without the effect, and
+    /// for solids): `10 p_b l0³` with the liquid's cohesive background pressure
+    /// `p_b = −C_aa Σ r P'(r) / (6 l0³)` ([`crate::physics::forces::wall_repulsion`]).
+    pub wall_repulsion_strength_j: Vec<f64>,
+    /// Range `r0` of the liquid–wall repulsion [m].
+    pub wall_repulsion_range_m: f64,
     /// The walls as solids liquid must stay out of (the health check's wall entry).
     pub walls: Vec<WallSolid>,
     /// The largest interaction radius [m]: `r_e` with interfacial tension if larger than the
@@ -128,6 +135,16 @@ impl Model {
             PairTable::zero(phase_names.len())
         };
         let effects = Effects::of(scene);
+        let virial = lattice::potential_virial_sum(&potential);
+        let wall_repulsion_strength_j: Vec<f64> = (0..phase_names.len())
+            .map(|a| {
+                if !effects.wall_repulsion || a >= n_liquids {
+                    return 0.0;
+                }
+                let p_b = -pairs.c(a, a) * virial / (6.0 * l0 * l0 * l0);
+                repulsion::STRENGTH_OVER_PB_L03 * p_b * l0 * l0 * l0
+            })
+            .collect();
         let support_m = scene.kernel_support();
         let interaction_radius_m = if effects.interfacial_tension {
             r_e
@@ -162,6 +179,8 @@ impl Model {
             neighbour_skin_m: d.neighbour_skin_over_l0 * l0,
             interaction_radius_m,
             walls: WallSolid::of(scene),
+            wall_repulsion_strength_j,
+            wall_repulsion_range_m: repulsion::RANGE_OVER_L0 * l0,
         })
     }
 

@@ -319,6 +319,12 @@ pub struct Effects {
     /// Fowkes pair strengths; also wetting of walls.
     #[serde(default)]
     pub interfacial_tension: bool,
+    /// A short-range liquid–wall repulsion that does not depend on the kernel (Monaghan 1994's
+    /// boundary force, acting within 0.8 l0 of a wall particle), for wide kernels whose
+    /// pressure does not hold a wetting liquid out of the gaps between wall particles. Needs
+    /// walls. Default off.
+    #[serde(default)]
+    pub wall_repulsion: bool,
 }
 
 /// Coefficients of Monaghan's artificial viscosity.

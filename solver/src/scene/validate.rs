@@ -256,6 +256,20 @@ fn effects(s: &Scene) -> R {
             ));
         }
     }
+    if e.wall_repulsion && s.walls.is_empty() {
+        return Err(SceneError::invalid(
+            "effects.wall_repulsion",
+            true,
+            "a liquid–wall repulsion needs walls: add a [[wall]] or remove the effect",
+        ));
+    }
+    if e.wall_repulsion && !e.interfacial_tension {
+        return Err(SceneError::invalid(
+            "effects.wall_repulsion",
+            true,
+            "its strength scales with the cohesive pressure of the potential: it needs effects.interfacial_tension",
+        ));
+    }
     if let Some(av) = &e.artificial_viscosity {
         non_negative("effects.artificial_viscosity.alpha1", av.alpha1, "α1")?;
         non_negative("effects.artificial_viscosity.alpha2", av.alpha2, "α2")?;

@@ -4,6 +4,7 @@
 
 use super::Simulation;
 use crate::kernel::Kernel;
+use crate::physics::forces::Monaghan1994WallRepulsion;
 use crate::physics::forces::{
     fluid_forces, ArtificialViscosity, ContinuityRate, LaminarViscosity, LoopInput, Neighbourhood,
     Off, Pressure,
@@ -51,6 +52,7 @@ impl Simulation {
             if e.artificial_viscosity.is_some() => self.artificial_viscosity_term(),
             if e.laminar_viscosity => self.laminar_viscosity_term(),
             if e.continuity() => self.continuity_term(),
+            if e.wall_repulsion => self.wall_repulsion_term(),
         );
     }
 
@@ -114,6 +116,14 @@ impl Simulation {
             n_phases: self.model.pairs.n_phases,
             pos: &self.particles.pos,
             phase: &self.particles.phase,
+        }
+    }
+
+    /// The liquid–wall repulsion of the model.
+    pub fn wall_repulsion_term(&self) -> Monaghan1994WallRepulsion<'_> {
+        Monaghan1994WallRepulsion {
+            strength_j: &self.model.wall_repulsion_strength_j,
+            range_m: self.model.wall_repulsion_range_m,
         }
     }
 

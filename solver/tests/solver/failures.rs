@@ -149,6 +149,21 @@ fn a_liquid_entering_a_wall_is_stopped_with_the_wall_and_the_cause() {
 }
 
 #[test]
+fn the_wall_repulsion_keeps_the_liquid_out_of_the_wall() {
+    // the run above, with the kernel-independent repulsion, goes well past the step at which
+    // the liquid entered the plate (148) without any particle inside it
+    let text = wetting_drop_in_paper_b_setting("").replace(
+        "interfacial_tension = true",
+        "interfacial_tension = true\nwall_repulsion = true",
+    );
+    let mut sim = Simulation::new(&Scene::from_toml_str(&text).unwrap()).unwrap();
+    for _ in 0..600 {
+        sim.step(f64::INFINITY)
+            .expect("no liquid enters the wall with the repulsion");
+    }
+}
+
+#[test]
 fn the_wall_entry_check_can_be_switched_off() {
     // the same run with the bound lifted goes on past the entry (the run above stops within
     // about 150 steps)

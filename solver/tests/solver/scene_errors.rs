@@ -245,3 +245,21 @@ fn negative_or_undefined_wall_depth_bound() {
         );
     }
 }
+
+#[test]
+fn wall_repulsion_without_walls_or_tension() {
+    assert_names(
+        &block_scene(
+            6,
+            1e-4,
+            "interfacial_tension = true\nwall_repulsion = true",
+            "",
+        ),
+        &["effects.wall_repulsion", "needs walls"],
+    );
+    let plate = "[[solid]]\nname = \"alumina\"\ncontact_angles = { matte = 90.0 }\n[[wall]]\nname = \"plate\"\nsolid = \"alumina\"\nshape = { kind = \"disk\", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }\n";
+    assert_names(
+        &block_scene(6, 1e-4, "wall_repulsion = true", plate),
+        &["effects.wall_repulsion", "interfacial_tension"],
+    );
+}

@@ -8,7 +8,8 @@
 //! in its own file implementing [`PairTerm`]: [`Pressure`], [`LaminarViscosity`],
 //! [`ArtificialViscosity`], the potential's
 //! [`PairwisePotential`](crate::physics::surface_tension::PairwisePotential), and the
-//! continuity density rate [`ContinuityRate`]. The loop ([`fluid_forces`]) takes a list of them,
+//! continuity density rate [`ContinuityRate`], and the liquid–wall repulsion
+//! [`Monaghan1994WallRepulsion`]. The loop ([`fluid_forces`]) takes a list of them,
 //! `(A, (B, (C, Off)))`; a term the scene does not declare is [`Off`] and compiles away. Walls
 //! act through these terms: pressure (with the walls' extrapolated pressure), the potential
 //! (wetting), and laminar viscosity at no-slip walls.
@@ -22,6 +23,7 @@ pub mod fused;
 pub mod laminar_viscosity;
 pub mod pressure;
 pub mod term;
+pub mod wall_repulsion;
 
 pub use artificial_viscosity::ArtificialViscosity;
 pub use continuity::ContinuityRate;
@@ -29,3 +31,4 @@ pub use fused::{fluid_forces, LoopInput};
 pub use laminar_viscosity::LaminarViscosity;
 pub use pressure::Pressure;
 pub use term::{Neighbourhood, Off, PairTerm};
+pub use wall_repulsion::Monaghan1994WallRepulsion;

@@ -38,8 +38,8 @@ pub struct Impact(pub Drop);
 
 struct Spec {
     liquid: LiquidProps,
-    /// (run id, solid, θ [deg], setting)
-    substrates: Vec<(&'static str, &'static str, f64, Setting)>,
+    /// (run id, solid, θ [deg], setting, liquid–wall repulsion)
+    substrates: Vec<(&'static str, &'static str, f64, Setting, bool)>,
     diameter_m: f64,
     fall_m: f64,
     /// Paper B's spacing d [m].
@@ -57,9 +57,23 @@ impl Impact {
             Drop::Water => Spec {
                 liquid: WATER,
                 substrates: vec![
-                    ("glass_30", "glass", 30.0, Setting::Natsui2021),
-                    ("teflon_90", "teflon", 90.0, Setting::Natsui2021),
-                    ("glass_30_natsui2016", "glass", 30.0, Setting::Natsui2016),
+                    ("glass_30", "glass", 30.0, Setting::Natsui2021, false),
+                    ("teflon_90", "teflon", 90.0, Setting::Natsui2021, false),
+                    (
+                        "glass_30_natsui2016",
+                        "glass",
+                        30.0,
+                        Setting::Natsui2016,
+                        false,
+                    ),
+                    // paper B's setting with the kernel-independent wall repulsion
+                    (
+                        "glass_30_natsui2016_repulsion",
+                        "glass",
+                        30.0,
+                        Setting::Natsui2016,
+                        true,
+                    ),
                 ],
                 diameter_m: 2.0e-3,
                 fall_m: 2.0e-3,
@@ -71,7 +85,7 @@ impl Impact {
             },
             Drop::Aluminium => Spec {
                 liquid: ALUMINIUM,
-                substrates: vec![("alumina_90", "alumina", 90.0, Setting::Natsui2021)],
+                substrates: vec![("alumina_90", "alumina", 90.0, Setting::Natsui2021, false)],
                 diameter_m: substrate::diameter_of_mass(70e-6, ALUMINIUM.density_kg_m3),
                 fall_m: 4.0e-3,
                 l0_paper_m: 2.0e-4,
@@ -81,7 +95,7 @@ impl Impact {
             },
             Drop::Iron => Spec {
                 liquid: IRON,
-                substrates: vec![("alumina_125", "alumina", 125.0, Setting::Natsui2021)],
+                substrates: vec![("alumina_125", "alumina", 125.0, Setting::Natsui2021, false)],
                 diameter_m: 5.0e-3,
                 fall_m: 5.0e-3,
                 l0_paper_m: 2.0e-4,
@@ -156,7 +170,7 @@ impl Case for Impact {
             _ => "paper B's spacing d and particle count (its Table 1)",
         };
         format!(
-            "setting natsui2021 (h/l0 = 1.05, r_e/l0 = 4.2, Wendland C2: paper B's own setting lets the liquid into the plate, see the water case's natsui2016 run); l0 = {:.2} mm, about {n:.0} particles, R/l0 = {:.1}, {:.0} ms from one spacing above the plate; {why}.",
+            "setting natsui2021 (h/l0 = 1.05, r_e/l0 = 4.2, Wendland C2: paper B's own setting lets the liquid into the plate, see the water case's natsui2016 run, and its natsui2016_repulsion run with the liquid–wall repulsion); l0 = {:.2} mm, about {n:.0} particles, R/l0 = {:.1}, {:.0} ms from one spacing above the plate; {why}.",
             l0 * 1e3,
             0.5 * s.diameter_m / l0,
             self.end(f) * 1e3,
@@ -172,9 +186,10 @@ impl Case for Impact {
         };
         s.substrates
             .iter()
-            .map(|&(id, solid, theta, setting)| {
+            .map(|&(id, solid, theta, setting, repulsion)| {
                 let scene = drop
                     .scene(setting, l0, solid, theta)
+                    .wall_repulsion(repulsion)
                     .time(self.end(f), self.output_interval(f))
                     .gravity([0.0, 0.0, -G_M_S2])
                     .wall(
@@ -211,7 +226,7 @@ impl Analysis for Impact {
         Ok(runs
             .iter()
             .filter_map(|run| {
-                let &(_, solid, theta, _) = substrates.iter().find(|x| x.0 == run.id)?;
+                let &(_, solid, theta, _, _) = substrates.iter().find(|x| x.0 == run.id)?;
                 Some(measure::impact_run(run, solid, theta, self.l0(f)))
             })
             .collect())

@@ -137,6 +137,12 @@ impl SceneBuilder {
         self
     }
 
+    /// The short-range liquid–wall repulsion on or off.
+    pub fn wall_repulsion(mut self, on: bool) -> Self {
+        self.scene.effects.wall_repulsion = on;
+        self
+    }
+
     /// Gravity [m/s²].
     pub fn gravity(mut self, g_m_s2: [f64; 3]) -> Self {
         self.scene.effects.gravity = Some(g_m_s2);

@@ -67,6 +67,17 @@ pub fn potential_surface_sum(potential: &Kondo2007Potential) -> f64 {
 
 /// `Σ_{j≠i} P(r_ij)` over the bulk lattice [m³].
 pub fn bulk_potential_sum(p: &Kondo2007Potential) -> f64 {
+    bulk_sum(p, |r| p.p(r))
+}
+
+/// The potential's virial sum `Σ_{j≠i} r_ij P'(r_ij)` over the bulk lattice [m³]: the
+/// potential's virial pressure is `C/(6 l0³)` times it (negative: cohesion).
+pub fn potential_virial_sum(p: &Kondo2007Potential) -> f64 {
+    bulk_sum(p, |r| r * p.dp_dr(r))
+}
+
+/// `Σ_{j≠i} f(r_ij)` over the bulk lattice within the potential's reach, in a fixed order.
+fn bulk_sum(p: &Kondo2007Potential, f: impl Fn(f64) -> f64) -> f64 {
     let n = (p.r_e_m / p.l0_m).ceil() as i64 + 1;
     let mut s = 0.0;
     for k in -n..=n {
@@ -75,25 +86,7 @@ pub fn bulk_potential_sum(p: &Kondo2007Potential) -> f64 {
                 if i == 0 && j == 0 && k == 0 {
                     continue;
                 }
-                s += p.p(p.l0_m * ((i * i + j * j + k * k) as f64).sqrt());
-            }
-        }
-    }
-    s
-}
-
-/// The potential's virial sum `Σ_{j≠i} r_ij P'(r_ij)` over the bulk lattice [m³]: the
-/// potential's virial pressure is `C/(6 l0³)` times it (negative: cohesion).
-pub fn potential_virial_sum(p: &Kondo2007Potential) -> f64 {
-    let n = (p.r_e_m / p.l0_m).ceil() as i64 + 1;
-    let mut s = 0.0;
-    for k in -n..=n {
-        for j in -n..=n {
-            for i in -n..=n {
-                let r = p.l0_m * ((i * i + j * j + k * k) as f64).sqrt();
-                if r > 0.0 {
-                    s += r * p.dp_dr(r);
-                }
+                s += f(p.l0_m * ((i * i + j * j + k * k) as f64).sqrt());
             }
         }
     }

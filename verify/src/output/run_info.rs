@@ -140,3 +140,35 @@ fn peak_memory_bytes() -> Option<u64> {
     let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kb * 1024)
 }
+
+#[cfg(test)]
+mod tests {
+    /// A finished run is reused when its recorded scene equals the one asked for, so the scene
+    /// must come back from `run_info.json` bit for bit. serde_json's default float parsing is
+    /// best-effort (1 ULP off for some values, e.g. the sound speed √(1.75σ/(0.01ρ l0)) of paper
+    /// B's water drop); the workspace enables its `float_roundtrip` feature. Without it, this
+    /// test fails and every finished run of that case was simulated again.
+    #[test]
+    fn floats_of_a_scene_survive_the_json_record_bit_for_bit() {
+        let values: [f64; 4] = [
+            11.319646779366787,
+            8.004198998326718,
+            0.1879255171603899,
+            1.2000000000000001e-3,
+        ];
+        for v in values {
+            let back: f64 = serde_json::from_str(&serde_json::to_string(&v).unwrap()).unwrap();
+            assert_eq!(back.to_bits(), v.to_bits(), "{v}");
+        }
+        // and a pseudo-random sample of magnitudes
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..10_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = f64::from_bits((x >> 2) | 0x3000_0000_0000_0000) * 1e-3;
+            let back: f64 = serde_json::from_str(&serde_json::to_string(&v).unwrap()).unwrap();
+            assert_eq!(back.to_bits(), v.to_bits(), "{v:e}");
+        }
+    }
+}

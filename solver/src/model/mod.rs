@@ -76,8 +76,8 @@ pub struct Model {
     pub wall_repulsion_range_m: f64,
     /// The walls as solids liquid must stay out of (the health check's wall entry).
     pub walls: Vec<WallSolid>,
-    /// The largest interaction radius [m]: `r_e` with interfacial tension if larger than the
-    /// kernel support, else the support.
+    /// The far radius of the neighbour search [m]: `r_e` with interfacial tension, else the
+    /// kernel support (the search uses the larger of it and the support).
     pub interaction_radius_m: f64,
 }
 
@@ -135,12 +135,15 @@ impl Model {
             PairTable::zero(phase_names.len())
         };
         let effects = Effects::of(scene);
-        let virial = lattice::potential_virial_sum(&potential);
+        // the lattice virial sum only when the repulsion needs it
+        let virial = effects
+            .wall_repulsion
+            .then(|| lattice::potential_virial_sum(&potential));
         let wall_repulsion_strength_j: Vec<f64> = (0..phase_names.len())
             .map(|a| {
-                if !effects.wall_repulsion || a >= n_liquids {
+                let Some(virial) = virial.filter(|_| a < n_liquids) else {
                     return 0.0;
-                }
+                };
                 let p_b = -pairs.c(a, a) * virial / (6.0 * l0 * l0 * l0);
                 repulsion::STRENGTH_OVER_PB_L03 * p_b * l0 * l0 * l0
             })

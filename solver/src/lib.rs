@@ -31,6 +31,7 @@ pub mod lattice;
 pub mod model;
 pub mod neighbours;
 pub mod observables;
+pub mod periodic;
 pub mod physics;
 pub mod scene;
 pub mod setup;

@@ -141,7 +141,7 @@ pub fn interfacial_energy(model: &Model, p: &Particles, lists: &NeighbourLists) 
         let mut ei = 0.5 * model.pairs.c(a, a) * model.bulk_potential_sum_m3;
         for &j in lists.all(i) {
             let j = j as usize;
-            let r = (p.pos[i] - p.pos[j]).norm();
+            let r = lists.delta(p.pos[i], p.pos[j]).norm();
             let c = model.pairs.c(a, p.phase[j] as usize);
             let share = if j < p.n_fluid { 0.5 } else { 1.0 };
             ei -= share * c * pot.p(r);

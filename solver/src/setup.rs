@@ -27,7 +27,27 @@ pub fn build_particles(
     // every claimed lattice site with its owner (bodies, then walls); sorted afterwards, a
     // site claimed twice is an overlap — 28 bytes a site, freed when the check is done
     let mut claims: Vec<([i64; 3], u32)> = Vec::new();
-    let mut claim = |idx: [i64; 3], owner: usize, _p: [f64; 3]| -> Result<(), SceneError> {
+    let periodic = scene.periodic.ranges();
+    let mut claim = |idx: [i64; 3], owner: usize, p: [f64; 3]| -> Result<(), SceneError> {
+        // a particle outside a periodic range would overlap one of its own images
+        for (k, range) in periodic.iter().enumerate() {
+            if let Some([lo, hi]) = *range {
+                if !(lo..hi).contains(&p[k]) {
+                    let name = match scene.bodies.get(owner) {
+                        Some(b) => format!("body[{}]", b.name),
+                        None => format!("wall[{}]", scene.walls[owner - scene.bodies.len()].name),
+                    };
+                    return Err(SceneError::invalid(
+                        name,
+                        format!("a particle at {:?} m", p),
+                        format!(
+                            "every particle must lie within the periodic range [{lo:e}, {hi:e})                              m along {}",
+                            ["x", "y", "z"][k]
+                        ),
+                    ));
+                }
+            }
+        }
         claims.push((idx, owner as u32));
         Ok(())
     };
@@ -54,7 +74,8 @@ pub fn build_particles(
                 (None, None) => unreachable!("validated"),
             };
             fluid_pos.push(Vec3::from(p));
-            fluid_vel.push(Vec3::from(b.velocity));
+            let wave = b.velocity_wave.as_ref().map_or([0.0; 3], |w| w.at(p));
+            fluid_vel.push(Vec3::from(b.velocity) + Vec3::from(wave));
             fluid_phase.push(scene.liquid_index(liquid).expect("validated") as u8);
         });
         if let Some(e) = err {

@@ -11,6 +11,7 @@ pub use walls::WallSolid;
 
 use crate::kernel::{Kernel, KernelKind};
 use crate::lattice;
+use crate::periodic::PeriodicBox;
 use crate::physics::eos::TaitEos;
 use crate::physics::forces::wall_repulsion as repulsion;
 use crate::physics::surface_tension::{Kondo2007Potential, PairTable};
@@ -79,6 +80,8 @@ pub struct Model {
     /// The far radius of the neighbour search [m]: `r_e` with interfacial tension, else the
     /// kernel support (the search uses the larger of it and the support).
     pub interaction_radius_m: f64,
+    /// Periodic axes: pair vectors are minimum images ([`PeriodicBox`]).
+    pub periodic: PeriodicBox,
 }
 
 impl Model {
@@ -154,6 +157,12 @@ impl Model {
         } else {
             support_m
         };
+        let neighbour_skin_m = d.neighbour_skin_over_l0 * l0;
+        let periodic = scene.periodic.to_box();
+        check_period(
+            &periodic,
+            support_m.max(interaction_radius_m) + neighbour_skin_m,
+        )?;
         Ok(Model {
             kernel: d.kernel,
             l0_m: l0,
@@ -179,8 +188,9 @@ impl Model {
             effects,
             time: scene.time.clone(),
             health: scene.health.clone(),
-            neighbour_skin_m: d.neighbour_skin_over_l0 * l0,
+            neighbour_skin_m,
             interaction_radius_m,
+            periodic,
             walls: WallSolid::of(scene),
             wall_repulsion_strength_j,
             wall_repulsion_range_m: repulsion::RANGE_OVER_L0 * l0,
@@ -228,4 +238,23 @@ impl Model {
         };
         (viscous, capillary)
     }
+}
+
+/// Refuses a period shorter than twice the neighbour search's cut-off `cut_m` [m]: a pair
+/// would then interact through two images at once.
+fn check_period(periodic: &PeriodicBox, cut_m: f64) -> Result<(), SceneError> {
+    for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+        let len = periodic.period_m(k);
+        if periodic.axis_is_periodic(k) && len < 2.0 * cut_m {
+            return Err(SceneError::invalid(
+                format!("periodic.{axis}"),
+                format!("a period of {len:e} m"),
+                format!(
+                    "the period must be at least twice the neighbour cut-off (max(support,                      r_e) + skin = {cut_m:e} m): at least {:e} m",
+                    2.0 * cut_m
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

@@ -14,10 +14,12 @@
 //! particle order and positions, so results do not depend on the number of threads.
 
 mod cells;
+mod periodic;
 mod table;
 
 pub use cells::{cell_key, CellKeyError};
 
+use crate::periodic::PeriodicBox;
 use crate::state::Vec3;
 use rayon::prelude::*;
 use table::CellTable;
@@ -30,6 +32,9 @@ pub struct NeighbourLists {
     segments: Vec<Vec<u32>>,
     /// Per particle: `(segment, start, near end, end)` within its segment.
     loc: Vec<[u32; 4]>,
+    /// The box the pairs were found in: every pair vector `x_i − x_j` of these lists is
+    /// [`NeighbourLists::delta`] (the minimum image along periodic axes).
+    pub periodic: PeriodicBox,
 }
 
 impl NeighbourLists {
@@ -52,6 +57,11 @@ impl NeighbourLists {
     #[inline(always)]
     pub fn far(&self, i: usize) -> &[u32] {
         self.slice(i, 2, 3)
+    }
+    /// `x_i − x_j` [m] of a listed pair (the minimum image along periodic axes).
+    #[inline(always)]
+    pub fn delta(&self, xi: Vec3, xj: Vec3) -> Vec3 {
+        self.periodic.delta(xi, xj)
     }
     /// Number of particles with lists.
     pub fn len(&self) -> usize {
@@ -163,6 +173,11 @@ impl NeighbourSearch {
         }
     }
 
+    /// Makes the axes of `periodic` periodic (distances by the minimum image).
+    pub fn set_periodic(&mut self, periodic: PeriodicBox) {
+        self.lists.periodic = periodic;
+    }
+
     /// Cell keys of `pos` [m].
     pub fn keys(&self, pos: &[Vec3]) -> Result<Vec<u64>, CellKeyError> {
         let inv = 1.0 / self.cell_m;
@@ -186,6 +201,10 @@ impl NeighbourSearch {
     /// `pos[n_fluid..]` (sorted by key). The segment buffers of the previous build are reused:
     /// no allocation churn, one set of lists in memory.
     pub fn build(&mut self, pos: &[Vec3], n_fluid: usize) -> Result<(), CellKeyError> {
+        if self.lists.periodic.is_periodic() {
+            self.build_periodic(pos, n_fluid);
+            return Ok(());
+        }
         self.fluid_keys = self.keys(&pos[..n_fluid])?;
         if self.wall_keys.len() != pos.len() - n_fluid {
             self.wall_keys = self.keys(&pos[n_fluid..])?;
@@ -294,7 +313,14 @@ impl NeighbourSearch {
                     }
                 }
             });
+        self.finish_build(pos.len(), n_fluid);
+        Ok(())
+    }
 
+    /// After the lists are written: caps the segments' slack and records where each
+    /// particle's list is.
+    fn finish_build(&mut self, n_total: usize, n_fluid: usize) {
+        let lists = &mut self.lists;
         // segments are reused from build to build and keep their largest size; cap the slack at
         // a quarter so that it cannot accumulate (measured: 2.9× the entries otherwise)
         for list in lists.segments.iter_mut() {
@@ -304,7 +330,7 @@ impl NeighbourSearch {
         }
         // each particle records where its list is
         lists.loc.clear();
-        lists.loc.reserve(pos.len());
+        lists.loc.reserve(n_total);
         for (k, c) in self.counts.iter().enumerate() {
             let mut offset = 0u32;
             for &(n_near, n_all) in c {
@@ -314,11 +340,10 @@ impl NeighbourSearch {
                 offset += n_all;
             }
         }
-        debug_assert_eq!(lists.loc.len(), pos.len());
+        debug_assert_eq!(lists.loc.len(), n_total);
         self.active.clear();
         self.active.resize(n_fluid, u64::MAX);
         self.builds += 1;
-        Ok(())
     }
 
     /// The largest dense cell table kept for `n` particles: 4 cells per particle (16 bytes) — a

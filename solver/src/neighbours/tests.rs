@@ -2,6 +2,7 @@
 //! force left out) and no extra one (the near/far split mislabelled).
 
 use super::*;
+use crate::periodic::PeriodicBox;
 use std::collections::BTreeSet;
 
 /// A deterministic pseudo-random generator (64-bit LCG, Knuth's constants).
@@ -30,10 +31,35 @@ fn random_points(n: usize, box_m: f64, offset: f64, seed: u64) -> Vec<Vec3> {
 }
 
 fn check(n_fluid: usize, n_wall: usize, near: f64, far: f64, skin: f64, seed: u64) {
+    check_in(PeriodicBox::OPEN, n_fluid, n_wall, (near, far, skin), seed);
+}
+
+/// All pairs `(i, j)`, `i ≠ j`, closer than `radius_m` under the minimum image of `b`.
+fn brute_force_pairs_in(b: &PeriodicBox, pos: &[Vec3], radius_m: f64) -> Vec<(u32, u32)> {
+    let r2 = radius_m * radius_m;
+    let mut pairs = Vec::new();
+    for i in 0..pos.len() {
+        for j in 0..pos.len() {
+            if i != j && b.delta(pos[i], pos[j]).norm_squared() < r2 {
+                pairs.push((i as u32, j as u32));
+            }
+        }
+    }
+    pairs
+}
+
+fn check_in(
+    periodic: PeriodicBox,
+    n_fluid: usize,
+    n_wall: usize,
+    (near, far, skin): (f64, f64, f64),
+    seed: u64,
+) {
     let box_m = 1e-3;
     let mut fluid = random_points(n_fluid, box_m, -3e-4, seed);
     let mut walls = random_points(n_wall, box_m, -3e-4, seed + 7);
     let mut s = NeighbourSearch::new(near, far, skin);
+    s.set_periodic(periodic);
     let perm = s.sort_order(&fluid).unwrap();
     fluid = perm.iter().map(|&i| fluid[i as usize]).collect();
     let permw = s.sort_order(&walls).unwrap();
@@ -44,11 +70,11 @@ fn check(n_fluid: usize, n_wall: usize, near: f64, far: f64, skin: f64, seed: u6
 
     let near_cut = near + skin;
     let far_cut = far.max(near) + skin;
-    let expected_near: BTreeSet<(u32, u32)> = brute_force_pairs(&pos, near_cut)
+    let expected_near: BTreeSet<(u32, u32)> = brute_force_pairs_in(&periodic, &pos, near_cut)
         .into_iter()
         .filter(|&(i, j)| (i as usize) < n_fluid || (j as usize) < n_fluid)
         .collect();
-    let expected_all: BTreeSet<(u32, u32)> = brute_force_pairs(&pos, far_cut)
+    let expected_all: BTreeSet<(u32, u32)> = brute_force_pairs_in(&periodic, &pos, far_cut)
         .into_iter()
         .filter(|&(i, _)| (i as usize) < n_fluid)
         .collect();
@@ -84,6 +110,20 @@ fn search_returns_exactly_the_brute_force_pairs() {
     check(800, 0, 1.0e-4, 2.0e-4, 0.0, 2);
     check(600, 300, 1.0e-4, 2.0e-4, 2e-5, 3);
     check(500, 500, 1.5e-4, 1.0e-4, 1e-5, 4);
+}
+
+#[test]
+fn periodic_search_returns_exactly_the_minimum_image_pairs() {
+    // the random points fill x ∈ [−0.3, 0.7) mm, y ∈ [0.3, 1.3) mm, z ∈ [0, 1) mm
+    let (x, y, z) = ([-3e-4, 7e-4], [3e-4, 1.3e-3], [0.0, 1e-3]);
+    let all = PeriodicBox::new([Some(x), Some(y), Some(z)]);
+    let only_x = PeriodicBox::new([Some(x), None, None]);
+    // a period of 1 mm against cut-offs of 0.22 mm (2 to 4 cells per axis) and 0.41 mm (2:
+    // the cells around a cell wrap onto each other and must be visited once)
+    check_in(all, 800, 0, (1.0e-4, 2.0e-4, 2e-5), 5);
+    check_in(all, 600, 300, (1.0e-4, 2.0e-4, 2e-5), 6);
+    check_in(only_x, 600, 300, (1.5e-4, 1.0e-4, 1e-5), 7);
+    check_in(all, 500, 100, (1.0e-4, 4.0e-4, 1e-5), 8);
 }
 
 #[test]

@@ -45,7 +45,7 @@ pub fn summation<K: Kernel>(
             for (c, chunk) in lists.near(i).chunks(CHUNK).enumerate() {
                 let mut r2 = [f64::INFINITY; CHUNK];
                 for (k, &j) in chunk.iter().enumerate() {
-                    r2[k] = (pi - pos[j as usize]).norm_squared();
+                    r2[k] = lists.delta(pi, pos[j as usize]).norm_squared();
                 }
                 let mut w = [0.0; CHUNK];
                 for k in 0..CHUNK {
@@ -85,7 +85,7 @@ fn same_phase<'a, K: Kernel>(
         if j >= n_fluid || phase[j] != ph {
             return None;
         }
-        let d = pi - pos[j];
+        let d = lists.delta(pi, pos[j]);
         let r2 = d.norm_squared();
         (r2 < support2).then(|| (d, kernel.w(r2.sqrt()), j))
     })

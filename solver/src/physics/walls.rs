@@ -46,7 +46,7 @@ pub fn update<K: Kernel>(
             let mut sv = Vec3::zeros();
             for &f in lists.near(n_fluid + k) {
                 let f = f as usize;
-                let r = xw - fluid_pos[f];
+                let r = lists.delta(xw, fluid_pos[f]);
                 let r2 = r.norm_squared();
                 if r2 >= support2 {
                     continue;

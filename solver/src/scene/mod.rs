@@ -8,9 +8,11 @@
 //! All particles sit on one simple cubic lattice with spacing `l0` whose sites are at
 //! `(i + ½, j + ½, k + ½) l0` for integers `i, j, k`; a body takes the sites inside its shape.
 
+mod periodic;
 mod shapes;
 mod validate;
 
+pub use periodic::{PeriodicAxes, SceneAxis, VelocityWave};
 pub(crate) use shapes::for_sites_in_box as shapes_for_sites;
 pub use shapes::{BodyShape, Cut, WallShape};
 
@@ -85,6 +87,13 @@ pub struct Scene {
     /// When a run stops as unstable.
     #[serde(default)]
     pub health: Health,
+    /// Periodic axes (none by default).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub periodic: PeriodicAxes,
+}
+
+fn is_default<T: Default + PartialEq>(v: &T) -> bool {
+    *v == T::default()
 }
 
 /// The bounds past which a run stops with a diagnosis instead of producing garbage.
@@ -471,6 +480,9 @@ pub struct Body {
     /// Initial velocity [m/s].
     #[serde(default)]
     pub velocity: [f64; 3],
+    /// A sinusoidal velocity added to `velocity` (e.g. a shear wave). Omit for none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocity_wave: Option<VelocityWave>,
 }
 
 /// A fixed solid wall.

@@ -65,6 +65,7 @@ pub(super) fn validate(s: &Scene) -> R {
     bodies(s)?;
     walls(s)?;
     tension_inputs(s)?;
+    super::periodic::validate(s)?;
     particle_budget(s)
 }
 

@@ -116,6 +116,7 @@ impl Simulation {
             n_phases: self.model.pairs.n_phases,
             pos: &self.particles.pos,
             phase: &self.particles.phase,
+            periodic: self.search.lists.periodic,
         }
     }
 

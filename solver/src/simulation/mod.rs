@@ -95,11 +95,12 @@ impl Simulation {
         scene.validate()?;
         let model = Model::from_scene(scene)?;
         let (particles, wall_no_slip, inventory) = build_particles(scene, &model)?;
-        let search = NeighbourSearch::new(
+        let mut search = NeighbourSearch::new(
             model.support_m,
             model.interaction_radius_m,
             model.neighbour_skin_m,
         );
+        search.set_periodic(model.periodic);
         let drho_next = if model.effects.continuity() {
             vec![0.0; particles.n_fluid]
         } else {
@@ -211,14 +212,14 @@ impl Simulation {
         let p = &self.particles;
         let r = self.search.far_radius_m;
         let r2 = r * r;
+        let lists = &self.search.lists;
         let total: usize = (0..p.n_fluid)
             .into_par_iter()
             .map(|i| {
-                self.search
-                    .lists
+                lists
                     .all(i)
                     .iter()
-                    .filter(|&&j| (p.pos[i] - p.pos[j as usize]).norm_squared() < r2)
+                    .filter(|&&j| lists.delta(p.pos[i], p.pos[j as usize]).norm_squared() < r2)
                     .count()
             })
             .sum();

@@ -3,6 +3,7 @@
 
 use super::Simulation;
 use crate::error::SimError;
+use rayon::prelude::*;
 use std::time::Instant;
 
 impl Simulation {
@@ -37,6 +38,13 @@ impl Simulation {
         let t0 = Instant::now();
         let nf = self.particles.n_fluid;
         let step = self.step;
+        let periodic = self.model.periodic;
+        if periodic.is_periodic() {
+            // particles that crossed a periodic boundary re-enter at the other side
+            self.particles.pos[..nf]
+                .par_iter_mut()
+                .for_each(|x| *x = periodic.wrap(*x));
+        }
         let perm = self
             .search
             .sort_order(&self.particles.pos[..nf])

@@ -10,5 +10,6 @@ mod effects;
 mod failures;
 mod fuzz_scenes;
 mod lattice_energy;
+mod periodic;
 mod scene_errors;
 mod walls;

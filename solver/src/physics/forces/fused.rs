@@ -117,7 +117,7 @@ fn particle<K: Kernel, T: PairTerm>(
         let rel = &mut s.rel;
         for (n, &j) in chunk.iter().enumerate() {
             let j = j as usize;
-            let d = pi - st.pos[j];
+            let d = inp.lists.delta(pi, st.pos[j]);
             rel.dx[n] = d.x;
             rel.dy[n] = d.y;
             rel.dz[n] = d.z;

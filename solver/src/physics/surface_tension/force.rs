@@ -28,6 +28,8 @@ pub struct PairwisePotential<'a> {
     pub pos: &'a [Vec3],
     /// Phase index per particle (all).
     pub phase: &'a [u8],
+    /// The box pair vectors are measured in (the lists' [`crate::neighbours::NeighbourLists::periodic`]).
+    pub periodic: crate::periodic::PeriodicBox,
 }
 
 /// `C_ij` [N/m²] per neighbour.
@@ -78,7 +80,7 @@ impl<'a> PairTerm for PairwisePotential<'a> {
                 ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for (k, &j) in chunk.iter().enumerate() {
                 let j = j as usize;
-                let d = pi - self.pos[j];
+                let d = self.periodic.delta(pi, self.pos[j]);
                 dx[k] = d.x;
                 dy[k] = d.y;
                 dz[k] = d.z;

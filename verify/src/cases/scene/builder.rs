@@ -8,8 +8,8 @@
 use super::materials::LiquidProps;
 use solver::kernel::KernelKind;
 use solver::scene::{
-    ArtificialViscosity, Body, BodyShape, Cut, DensityScheme, Interface, Liquid, Reinit, Setting,
-    Solid, Wall, WallBoundary, WallShape,
+    ArtificialViscosity, Body, BodyShape, Cut, DensityScheme, Interface, Liquid, PeriodicAxes,
+    Reinit, Setting, Solid, VelocityWave, Wall, WallBoundary, WallShape,
 };
 use solver::Scene;
 
@@ -200,7 +200,36 @@ impl SceneBuilder {
             shape,
             cut: None,
             velocity: velocity_m_s,
+            velocity_wave: None,
         });
+        self
+    }
+
+    /// A body of `liquid` at rest but for a sinusoidal velocity `wave`.
+    pub fn waving_body(
+        mut self,
+        name: &str,
+        liquid: &str,
+        shape: BodyShape,
+        wave: VelocityWave,
+    ) -> Self {
+        self = self.body(name, liquid, shape);
+        self.scene
+            .bodies
+            .last_mut()
+            .expect("just added")
+            .velocity_wave = Some(wave);
+        self
+    }
+
+    /// Makes every axis periodic over the box `[min, max]` [m].
+    pub fn periodic_box(mut self, min_m: [f64; 3], max_m: [f64; 3]) -> Self {
+        let r = |k: usize| Some([min_m[k], max_m[k]]);
+        self.scene.periodic = PeriodicAxes {
+            x: r(0),
+            y: r(1),
+            z: r(2),
+        };
         self
     }
 
@@ -212,6 +241,7 @@ impl SceneBuilder {
             shape,
             cut: Some(cut),
             velocity: [0.0; 3],
+            velocity_wave: None,
         });
         self
     }

@@ -10,6 +10,7 @@ mod incline;
 pub mod paper_values;
 mod plate_eq23;
 pub mod scene;
+mod shear_wave;
 pub mod substrate;
 mod views;
 mod water_oil_teflon;
@@ -21,6 +22,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
     vec![
         Box::new(cube_drop::CubeDrop),
         Box::new(drop_oscillation::DropOscillation),
+        Box::new(shear_wave::ShearWave),
         Box::new(doublet::Doublet(doublet::Pair::Equal)),
         Box::new(doublet::Doublet(doublet::Pair::MatteSlag)),
         Box::new(plate_eq23::PlateEq23),

@@ -137,6 +137,12 @@ impl SceneBuilder {
         self
     }
 
+    /// The pairwise potential (surface and interfacial tension) on or off.
+    pub fn interfacial_tension(mut self, on: bool) -> Self {
+        self.scene.effects.interfacial_tension = on;
+        self
+    }
+
     /// The short-range liquid–wall repulsion on or off.
     pub fn wall_repulsion(mut self, on: bool) -> Self {
         self.scene.effects.wall_repulsion = on;

@@ -1,0 +1,120 @@
+//! The shear wave's metrics: per run the effective viscosity against the liquid's, the number
+//! of reversals (a liquid's: none), and for a ringing run the shear modulus it implies beside
+//! the Born modulus of the setting's reference lattice.
+
+use super::measure::{Response, WaveRun};
+use crate::cases::scene::SLAG;
+use crate::diagnostics::lattice_moduli::lattice_elasticity;
+use crate::suite::{Metric, Tolerance};
+
+/// The liquid model's target for the shear wave's decay (README, "Targets of the liquid
+/// model").
+const DECAY_TARGET: f64 = 0.10;
+
+/// The kinematic viscosity the run's liquid should show [m²/s], `μ/ρ`, and the artificial
+/// viscosity's estimate `α1 h c/10` (Monaghan 1992) — an estimate for compressive flows: it
+/// acts only on approaching pairs, and a shear wave does not compress.
+pub fn reference_viscosity_m2_s(m: &WaveRun) -> (f64, f64) {
+    let scene = &m.run.info.scene;
+    let nu = SLAG.viscosity_pa_s / SLAG.density_kg_m3;
+    let alpha1 = scene
+        .effects
+        .artificial_viscosity
+        .as_ref()
+        .map_or(0.0, |a| a.alpha1);
+    let nu_av = alpha1 * scene.h() * scene.discretisation.sound_speed / 10.0;
+    (nu, nu_av)
+}
+
+/// Every metric of the case.
+pub fn metrics(case: &str, runs: &[WaveRun]) -> Vec<Metric> {
+    runs.iter().flat_map(|m| run_metrics(case, m)).collect()
+}
+
+fn run_metrics(case: &str, m: &WaveRun) -> Vec<Metric> {
+    let id = &m.run.id;
+    let status = m.run.status_note();
+    let (nu_ref, nu_av) = reference_viscosity_m2_s(m);
+    let k2 = m.k_per_m * m.k_per_m;
+    let nu_initial = m.initial_rate_per_s / k2;
+    let whole = m.response.viscosity_m2_s(m.k_per_m);
+    let response = match &m.response {
+        Response::Decay { .. } => format!("whole run: exponential decay, ν = {whole:.3e} m²/s"),
+        Response::Ringing(f) => format!(
+            "whole run: damped oscillation, period {:.3} ms, Kelvin–Voigt ν = {whole:.3e} m²/s",
+            f.period_s * 1e3
+        ),
+        Response::Unmeasured(e) => format!("whole run not measured: {e}"),
+    };
+    let mut out = vec![
+        Metric::new(case, format!("{id}: ν_eff / ν"), "-", nu_initial / nu_ref)
+            .against(
+                1.0,
+                Tolerance::relative(
+                    DECAY_TARGET,
+                    1.0,
+                    "10 %: the liquid model's target for the shear wave's decay",
+                ),
+            )
+            .run(m.run)
+            .note(format!(
+                "{status}ν_eff = −A'(0)/(A(0) k²) = {nu_initial:.3e} m²/s (unaffected by elasticity: the strain is 0 at the start) against ν = μ/ρ = {nu_ref:.3e} m²/s (the artificial viscosity's α1 h c/10 = {nu_av:.2e} m²/s is an estimate for compressive flows); {response}"
+            )),
+        Metric::new(case, format!("{id}: reversals of A(t)"), "-", m.reversals as f64)
+            .against(
+                0.0,
+                Tolerance::absolute(0.5, "a liquid's shear wave decays without reversing"),
+            )
+            .run(m.run)
+            .note(format!("{status}sign changes of the sin(kz) velocity mode above 0.1 % of its start")),
+    ];
+    if let (Response::Ringing(f), Some(w_el)) = (&m.response, m.response.elastic_frequency_rad_s())
+    {
+        out.push(
+            Metric::new(
+                case,
+                format!("{id}: ringing frequency"),
+                "Hz",
+                1.0 / f.period_s,
+            )
+            .run(m.run)
+            .note(format!(
+                "{status}damped-cosine fit of A(t); a liquid's: none"
+            )),
+        );
+        out.push(shear_modulus(case, m, w_el));
+    }
+    out
+}
+
+/// The shear modulus `G = ρ ω_el²/k²` a ringing run implies, in σ/l0, beside the Born `G44`
+/// of the setting's reference lattice (information: a liquid has neither).
+fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
+    let scene = &m.run.info.scene;
+    let d = &scene.discretisation;
+    let unit = SLAG.surface_tension_n_m / d.l0;
+    let g = SLAG.density_kg_m3 * w_el * w_el / (m.k_per_m * m.k_per_m) / unit;
+    let born = if scene.effects.interfacial_tension {
+        let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0);
+        format!(
+            "Born G44 of the reference lattice ({} at h = {} l0, r_e = {} l0, potential + pressure term at p_b = {:.3} σ/l0): {:.3} σ/l0",
+            d.kernel.name(),
+            d.h_over_l0,
+            d.re_over_l0,
+            e.background_pressure,
+            e.total().g44
+        )
+    } else {
+        "no potential: the reference lattice carries no stress, its Born moduli are 0".into()
+    };
+    Metric::new(
+        case,
+        format!("{}: shear modulus from the ringing", m.run.id),
+        "σ/l0",
+        g,
+    )
+    .run(m.run)
+    .note(format!(
+        "ρ ω_el²/k² with ω_el = √(ω² + γ²) = {w_el:.1} rad/s; {born}"
+    ))
+}

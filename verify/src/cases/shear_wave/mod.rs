@@ -1,0 +1,142 @@
+//! A shear wave in a periodic box: does the particle system flow like a liquid or ring like a
+//! solid?
+//!
+//! A cube of slag fills a box periodic along x, y and z with side `L`; it starts on the
+//! undisturbed lattice with the velocity `v_x = U sin(k z)`, `k = 2π/L`, and no pressure,
+//! gravity or free surface. A Newtonian liquid's wave decays as `exp(−ν k² t)` without ever
+//! reversing. A medium with a shear modulus `G` rings instead: `A'' + ν k² A' + (G/ρ) k² A = 0`
+//! for the amplitude `A(t)` of the velocity's `sin(kz)` mode (Kelvin–Voigt), an oscillation of
+//! angular frequency `√(G k²/ρ − (ν k²/2)²)` when `G` is large enough.
+//!
+//! Two runs: with the paper's effects (the pairwise potential and both viscosities), and with
+//! the viscosities alone — no potential, so no cohesive background pressure and no lattice
+//! stress: that isolates the SPH viscous operator from the lattice's elasticity. Measured from
+//! `A(t)` (recorded at every output): the effective viscosity `ν_eff` against `μ/ρ` (the
+//! artificial viscosity's `α1 h c/10`, 4 % of it here, is noted beside), and whether and how
+//! fast the wave rings; beside them the
+//! shear modulus `G44` that the Born sums of the setting's reference lattice predict
+//! ([`crate::diagnostics::lattice_moduli`]) — for this wave, the relevant one.
+
+mod draw;
+mod judge;
+mod measure;
+
+use super::analysis::{self, Analysis};
+use super::scene::{sound_speed_for, SceneBuilder, SLAG};
+use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use solver::scene::{BodyShape, SceneAxis, VelocityWave};
+use solver::Simulation;
+use std::path::Path;
+
+/// The case.
+pub struct ShearWave;
+
+/// Side of the periodic box, one wavelength [m].
+const BOX_M: f64 = 1.6e-3;
+/// Velocity amplitude `U` [m/s]: the strain amplitude `k U/ω` stays near 3e-3 for an elastic
+/// response at the Born modulus — small enough for the lattice not to yield.
+const AMPLITUDE_M_S: f64 = 1e-3;
+
+/// Spacings per side and the run length [s] at a fidelity.
+fn design(f: Fidelity) -> (usize, f64) {
+    match f {
+        // the smallest box the potential's cut-off allows (2 (r_e + skin) = 8.8 l0)
+        Fidelity::Smoke => (10, 1.5e-3),
+        // five viscous decay times 1/(ν k²) of slag in this box, and one and a half periods of
+        // the ringing at the Born modulus
+        Fidelity::Standard => (16, 12e-3),
+        Fidelity::Paper => (24, 12e-3),
+    }
+}
+
+/// Names of the probe columns: `(2/N) Σ v_x sin(k z)` and `(2/N) Σ v_x cos(k z)` [m/s].
+const SINE: &str = "vx_sin_kz_m_s";
+const COSINE: &str = "vx_cos_kz_m_s";
+
+impl Case for ShearWave {
+    fn name(&self) -> &'static str {
+        "shear_wave"
+    }
+    fn title(&self) -> &'static str {
+        "Shear wave in a periodic box: viscous decay against ν k², and any elastic ringing"
+    }
+    fn source(&self) -> &'static str {
+        "Newtonian shear-wave decay exp(−ν k² t) (e.g. Landau & Lifshitz, Fluid Mechanics §24); a diagnostic of the model, not a paper check"
+    }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        None
+    }
+    fn resolution(&self, f: Fidelity) -> String {
+        let (n, end) = design(f);
+        format!(
+            "{n}³ particles, L = {} mm = {n} l0 (one wavelength), U = {AMPLITUDE_M_S} m/s, {} ms.",
+            BOX_M * 1e3,
+            end * 1e3
+        )
+    }
+    fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
+        let (n, end) = design(f);
+        let l0 = BOX_M / n as f64;
+        [("potential_and_viscosity", true), ("viscosity_only", false)]
+            .into_iter()
+            .map(|(id, tension)| {
+                let scene = SceneBuilder::new(l0, sound_speed_for(&SLAG, l0, 0.0))
+                    .time(end, 5e-5)
+                    .paper_effects()
+                    .interfacial_tension(tension)
+                    .liquid(&SLAG)
+                    .waving_body(
+                        "box",
+                        SLAG.name,
+                        BodyShape::Box {
+                            min: [0.0; 3],
+                            max: [BOX_M; 3],
+                        },
+                        VelocityWave {
+                            amplitude: [AMPLITUDE_M_S, 0.0, 0.0],
+                            along: SceneAxis::Z,
+                            wavelength: BOX_M,
+                        },
+                    )
+                    .periodic_box([0.0; 3], [BOX_M; 3])
+                    .build();
+                RunSpec {
+                    id: id.into(),
+                    scene,
+                    snapshot_times_s: vec![],
+                }
+            })
+            .collect()
+    }
+    fn probe(&self, sim: &Simulation) -> Vec<(&'static str, f64)> {
+        let p = &sim.particles;
+        let k = std::f64::consts::TAU / BOX_M;
+        let (s, c) = measure::mode_amplitudes(
+            p.pos[..p.n_fluid]
+                .iter()
+                .zip(&p.vel[..p.n_fluid])
+                .map(|(x, v)| (x.z, v.x)),
+            k,
+        );
+        vec![(SINE, s), (COSINE, c)]
+    }
+    fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
+        analysis::analyse(self, f, runs, dir)
+    }
+}
+
+impl Analysis for ShearWave {
+    type Measured<'r> = Vec<measure::WaveRun<'r>>;
+
+    fn measure<'r>(&self, _: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
+        Ok(runs.iter().map(measure::wave_run).collect())
+    }
+
+    fn judge(&self, _: Fidelity, measured: &Self::Measured<'_>) -> anyhow::Result<Vec<Metric>> {
+        Ok(judge::metrics(self.name(), measured))
+    }
+
+    fn draw(&self, _: Fidelity, measured: &Self::Measured<'_>, dir: &Path) -> anyhow::Result<()> {
+        draw::plots(measured, dir)
+    }
+}

@@ -88,7 +88,10 @@ fn run_metrics(case: &str, m: &WaveRun) -> Vec<Metric> {
 }
 
 /// The shear modulus `G = ρ ω_el²/k²` a ringing run implies, in σ/l0, beside the Born `G44`
-/// of the setting's reference lattice (information: a liquid has neither).
+/// of the setting's reference lattice (information: a liquid has neither). The periodic box
+/// holds the lattice at its reference density, where the EOS pressure is zero: only the
+/// potential's term applies. A drop's interior is compressed until the EOS carries the
+/// cohesive pressure `p_b`, which adds the pressure term (stated beside).
 fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
     let scene = &m.run.info.scene;
     let d = &scene.discretisation;
@@ -97,12 +100,13 @@ fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
     let born = if scene.effects.interfacial_tension {
         let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0);
         format!(
-            "Born G44 of the reference lattice ({} at h = {} l0, r_e = {} l0, potential + pressure term at p_b = {:.3} σ/l0): {:.3} σ/l0",
+            "Born G44 of the reference lattice at the box's state (lattice density, zero pressure: the potential's term, r_e = {} l0): {:.3} σ/l0; in a drop's interior, where the EOS carries p_b = {:.3} σ/l0 ({} at h = {} l0), the pressure term adds {:+.3}",
+            d.re_over_l0,
+            e.potential.g44,
+            e.background_pressure,
             d.kernel.name(),
             d.h_over_l0,
-            d.re_over_l0,
-            e.background_pressure,
-            e.total().g44
+            e.pressure.g44
         )
     } else {
         "no potential: the reference lattice carries no stress, its Born moduli are 0".into()

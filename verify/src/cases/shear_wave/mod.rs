@@ -13,9 +13,10 @@
 //! stress: that isolates the SPH viscous operator from the lattice's elasticity. Measured from
 //! `A(t)` (recorded at every output): the effective viscosity `ν_eff` against `μ/ρ` (the
 //! artificial viscosity's `α1 h c/10`, 4 % of it here, is noted beside), and whether and how
-//! fast the wave rings; beside them the
-//! shear modulus `G44` that the Born sums of the setting's reference lattice predict
-//! ([`crate::diagnostics::lattice_moduli`]) — for this wave, the relevant one.
+//! fast the wave rings; beside them the shear modulus `G44` that the Born sums of the reference
+//! lattice predict ([`crate::diagnostics::lattice_moduli`]) — for this wave, the relevant one.
+//! The box keeps the lattice at its reference density, where the EOS pressure is zero, so only
+//! the potential's term of the modulus acts here; a drop's interior adds the pressure term.
 
 mod draw;
 mod judge;

@@ -189,6 +189,9 @@ enum Command {
             default_value = "2.1,3.1,4.0,4.2,5.6"
         )]
         re_over_l0: Vec<f64>,
+        /// Orders m of the potential's zero at r_e (1: Kondo 2007; 2, 3: smoother).
+        #[arg(long, value_delimiter = ',', default_value = "1")]
+        order: Vec<u8>,
     },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
@@ -257,11 +260,12 @@ fn main() {
             kernel,
             h_over_l0,
             re_over_l0,
+            order,
         } => {
             let kernels: Vec<KernelKind> = kernel.into_iter().map(KernelKind::from).collect();
             print!(
                 "{}",
-                lattice_moduli::table(&kernels, &h_over_l0, &re_over_l0)
+                lattice_moduli::table(&kernels, &h_over_l0, &re_over_l0, &order)
             );
             0
         }

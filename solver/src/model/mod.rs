@@ -94,6 +94,7 @@ impl Model {
         let potential = Kondo2007Potential {
             l0_m: l0,
             r_e_m: r_e,
+            order: d.potential_order,
         };
         let lattice_kernel_sum = with_kernel!(d.kernel, K => lattice::kernel_sum(&K::new(h), l0));
         let surface_sum_m3 = lattice::potential_surface_sum(&potential);

@@ -173,6 +173,11 @@ pub struct Discretisation {
     /// at 15³.
     #[serde(default = "default_re_over_l0")]
     pub re_over_l0: f64,
+    /// Order `m` of the potential's zero at its cut-off, `P'(r) = (r − l0)(r − r_e)^m / l0^(m−1)`:
+    /// 1 is Kondo et al. (2007), the papers' potential (default); 2 and 3 are smoother at the
+    /// cut-off, which makes the particle lattice's shear moduli small for any `r_e`.
+    #[serde(default = "default_potential_order", skip_serializing_if = "is_kondo")]
+    pub potential_order: u8,
     /// Artificial speed of sound `c` [m/s], the same for all phases (Tait EOS, Eq. 14).
     pub sound_speed: f64,
     /// Which mass a particle carries. Default `physical` (`ρ0 l0³`); `lattice` is physics.md
@@ -246,6 +251,14 @@ fn default_h_over_l0() -> f64 {
 fn default_re_over_l0() -> f64 {
     Setting::default().re_over_l0()
 }
+fn default_potential_order() -> u8 {
+    1
+}
+
+fn is_kondo(order: &u8) -> bool {
+    *order == 1
+}
+
 fn default_skin_over_l0() -> f64 {
     0.2
 }

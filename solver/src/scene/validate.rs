@@ -164,6 +164,13 @@ fn discretisation(s: &Scene) -> R {
         10.0,
         "r_e/l0",
     )?;
+    if !(1..=3).contains(&d.potential_order) {
+        return Err(SceneError::invalid(
+            "discretisation.potential_order",
+            d.potential_order,
+            "the potential's order must be 1 (Kondo 2007), 2 or 3",
+        ));
+    }
     positive(
         "discretisation.sound_speed",
         d.sound_speed,

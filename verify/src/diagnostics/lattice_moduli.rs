@@ -221,10 +221,12 @@ fn virial_pressure(phi: &dyn PairEnergy) -> f64 {
 fn energies<K: Kernel>(
     h_over_l0: f64,
     re_over_l0: f64,
+    order: u8,
 ) -> (PotentialEnergy, PressureEnergy<K>, f64) {
     let potential = Kondo2007Potential {
         l0_m: 1.0,
         r_e_m: re_over_l0,
+        order,
     };
     let s = potential_surface_sum(&potential);
     let pot = PotentialEnergy {
@@ -239,14 +241,16 @@ fn energies<K: Kernel>(
     (pot, PressureEnergy { kernel, p_b }, s)
 }
 
-/// The elasticity of the reference lattice for a kernel, `h/l0` and `r_e/l0`.
+/// The elasticity of the reference lattice for a kernel, `h/l0`, `r_e/l0` and the potential's
+/// order (1: Kondo 2007).
 pub fn lattice_elasticity(
     kernel: KernelKind,
     h_over_l0: f64,
     re_over_l0: f64,
+    order: u8,
 ) -> LatticeElasticity {
     with_kernel!(kernel, K => {
-        let (pot, pres, s) = energies::<K>(h_over_l0, re_over_l0);
+        let (pot, pres, s) = energies::<K>(h_over_l0, re_over_l0, order);
         let moduli = |phi: &dyn PairEnergy| Moduli {
             g44: born(phi, Mode::Shear44),
             c_prime: born(phi, Mode::Stretch),
@@ -267,30 +271,36 @@ pub fn lattice_elasticity(
 /// finite strain `gamma` of `mode`: the check of the Born moduli by finite differences.
 pub fn shear_stress(
     kernel: KernelKind,
-    h_over_l0: f64,
-    re_over_l0: f64,
+    (h_over_l0, re_over_l0, order): (f64, f64, u8),
     mode: Mode,
     gamma: f64,
 ) -> f64 {
     with_kernel!(kernel, K => {
-        let (pot, pres, _) = energies::<K>(h_over_l0, re_over_l0);
+        let (pot, pres, _) = energies::<K>(h_over_l0, re_over_l0, order);
         conjugate_stress(&pot, mode, gamma) + conjugate_stress(&pres, mode, gamma)
     })
 }
 
-/// A markdown table of the lattice's elasticity for every kernel × `h/l0` × `r_e/l0`.
-pub fn table(kernels: &[KernelKind], h_over_l0: &[f64], re_over_l0: &[f64]) -> String {
+/// A markdown table of the lattice's elasticity for every kernel × `h/l0` × `r_e/l0` ×
+/// potential order.
+pub fn table(
+    kernels: &[KernelKind],
+    h_over_l0: &[f64],
+    re_over_l0: &[f64],
+    orders: &[u8],
+) -> String {
     let mut out = String::from(
-        "| kernel | h/l0 | r_e/l0 | S/l0³ | p_b [σ/l0] | G44 potential | C′ potential | G44 pressure | C′ pressure | **G44 total** | **C′ total** |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| kernel | h/l0 | r_e/l0 | order | S/l0³ | p_b [σ/l0] | G44 potential | C′ potential | G44 pressure | C′ pressure | **G44 total** | **C′ total** |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for &kernel in kernels {
-        for &re in re_over_l0 {
-            for &h in h_over_l0 {
-                let e = lattice_elasticity(kernel, h, re);
-                let t = e.total();
-                out.push_str(&format!(
-                    "| {} | {h} | {re} | {:.4} | {:.3} | {:+.3} | {:+.3} | {:+.3} | {:+.3} | **{:+.3}** | **{:+.3}** |\n",
+        for &order in orders {
+            for &re in re_over_l0 {
+                for &h in h_over_l0 {
+                    let e = lattice_elasticity(kernel, h, re, order);
+                    let t = e.total();
+                    out.push_str(&format!(
+                    "| {} | {h} | {re} | {order} | {:.4} | {:.3} | {:+.3} | {:+.3} | {:+.3} | {:+.3} | **{:+.3}** | **{:+.3}** |\n",
                     kernel.name(),
                     e.surface_sum,
                     e.background_pressure,
@@ -301,6 +311,7 @@ pub fn table(kernels: &[KernelKind], h_over_l0: &[f64], re_over_l0: &[f64]) -> S
                     t.g44,
                     t.c_prime
                 ));
+                }
             }
         }
     }
@@ -321,12 +332,20 @@ mod tests {
     fn born_moduli_match_finite_differences_of_the_stress() {
         let delta = 1e-6;
         for kernel in KernelKind::ALL {
-            for (h, re) in [(1.05, 4.2), (1.3, 4.2), (2.0, 4.0), (1.05, 2.1), (1.5, 3.1)] {
-                let e = lattice_elasticity(kernel, h, re);
+            for (h, re, order) in [
+                (1.05, 4.2, 1),
+                (1.3, 4.2, 1),
+                (2.0, 4.0, 1),
+                (1.05, 2.1, 1),
+                (1.5, 3.1, 1),
+                (1.05, 4.8, 3),
+                (1.3, 4.4, 2),
+            ] {
+                let e = lattice_elasticity(kernel, h, re, order);
                 let t = e.total();
                 for (mode, born) in [(Mode::Shear44, t.g44), (Mode::Stretch, t.c_prime)] {
-                    let fd = (shear_stress(kernel, h, re, mode, delta)
-                        - shear_stress(kernel, h, re, mode, -delta))
+                    let fd = (shear_stress(kernel, (h, re, order), mode, delta)
+                        - shear_stress(kernel, (h, re, order), mode, -delta))
                         / (2.0 * delta);
                     assert!(
                         (fd - born).abs() < 1e-6,
@@ -341,9 +360,9 @@ mod tests {
     /// pressure cancels the potential's virial pressure exactly.
     #[test]
     fn the_reference_lattice_is_in_equilibrium() {
-        let e = lattice_elasticity(KernelKind::WendlandC2, 1.05, 4.2);
+        let e = lattice_elasticity(KernelKind::WendlandC2, 1.05, 4.2, 1);
         for mode in [Mode::Shear44, Mode::Stretch] {
-            let s = shear_stress(KernelKind::WendlandC2, 1.05, 4.2, mode, 0.0);
+            let s = shear_stress(KernelKind::WendlandC2, (1.05, 4.2, 1), mode, 0.0);
             assert!(s.abs() < 1e-12, "{mode:?}: stress {s} at zero strain");
         }
         assert!(e.potential_pressure < 0.0, "the potential is cohesive");

@@ -155,7 +155,7 @@ fn spread(case: &str, runs: &[DropRun]) -> Vec<Metric> {
 /// The Born shear moduli of the run's setting (information beside the results).
 fn lattice(case: &str, m: &DropRun) -> Vec<Metric> {
     let d = &m.run.info.scene.discretisation;
-    let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0);
+    let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
     let t = e.total();
     let note = format!(
         "reference lattice of {} at h = {} l0, r_e = {} l0, potential + pressure term at p_b = {:.3} σ/l0 (a liquid: 0)",

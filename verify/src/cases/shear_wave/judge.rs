@@ -98,7 +98,7 @@ fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
     let unit = SLAG.surface_tension_n_m / d.l0;
     let g = SLAG.density_kg_m3 * w_el * w_el / (m.k_per_m * m.k_per_m) / unit;
     let born = if scene.effects.interfacial_tension {
-        let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0);
+        let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
         format!(
             "Born G44 of the reference lattice at the box's state (lattice density, zero pressure: the potential's term, r_e = {} l0): {:.3} σ/l0; in a drop's interior, where the EOS carries p_b = {:.3} σ/l0 ({} at h = {} l0), the pressure term adds {:+.3}",
             d.re_over_l0,

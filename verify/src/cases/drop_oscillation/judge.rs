@@ -3,7 +3,7 @@
 
 use super::measure::DropRun;
 use crate::analytic::lamb;
-use crate::cases::scene::MATTE;
+use crate::cases::scene::{artificial_viscosity_m2_s, MATTE};
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::suite::{Metric, Tolerance};
 
@@ -29,13 +29,8 @@ pub struct Reference {
 pub fn reference(m: &DropRun) -> Reference {
     let scene = &m.run.info.scene;
     let nu = MATTE.viscosity_pa_s / MATTE.density_kg_m3;
-    let alpha1 = scene
-        .effects
-        .artificial_viscosity
-        .as_ref()
-        .map_or(0.0, |a| a.alpha1);
     // the artificial viscosity's effective ν ≈ α h c/10 (Monaghan 1992; physics.md §3)
-    let nu_av = alpha1 * scene.h() * scene.discretisation.sound_speed / 10.0;
+    let nu_av = artificial_viscosity_m2_s(scene);
     Reference {
         period_s: lamb::lamb_period(
             2,

@@ -48,3 +48,14 @@ pub fn sound_speed_for(liquid: &LiquidProps, l0_m: f64, floor_m_s: f64) -> f64 {
 /// Gravity of Natsui 2021's scenes on a plate [m/s²] (paper B's cases use 9.81 m/s², see
 /// `substrate`).
 pub const GRAVITY_M_S2: [f64; 3] = [0.0, 0.0, -9.8];
+
+/// The artificial viscosity's effective kinematic viscosity `α1 h c/10` [m²/s] in `scene` (0
+/// without it): Monaghan (1992)'s estimate for compressive flows.
+pub fn artificial_viscosity_m2_s(scene: &solver::Scene) -> f64 {
+    let alpha1 = scene
+        .effects
+        .artificial_viscosity
+        .as_ref()
+        .map_or(0.0, |a| a.alpha1);
+    alpha1 * scene.h() * scene.discretisation.sound_speed / 10.0
+}

@@ -5,4 +5,6 @@ mod builder;
 mod materials;
 
 pub use builder::SceneBuilder;
-pub use materials::{sound_speed_for, LiquidProps, GRAVITY_M_S2, MATTE, SLAG};
+pub use materials::{
+    artificial_viscosity_m2_s, sound_speed_for, LiquidProps, GRAVITY_M_S2, MATTE, SLAG,
+};

@@ -3,7 +3,7 @@
 //! the Born modulus of the setting's reference lattice.
 
 use super::measure::{Response, WaveRun};
-use crate::cases::scene::SLAG;
+use crate::cases::scene::{artificial_viscosity_m2_s, SLAG};
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::suite::{Metric, Tolerance};
 
@@ -17,13 +17,7 @@ const DECAY_TARGET: f64 = 0.10;
 pub fn reference_viscosity_m2_s(m: &WaveRun) -> (f64, f64) {
     let scene = &m.run.info.scene;
     let nu = SLAG.viscosity_pa_s / SLAG.density_kg_m3;
-    let alpha1 = scene
-        .effects
-        .artificial_viscosity
-        .as_ref()
-        .map_or(0.0, |a| a.alpha1);
-    let nu_av = alpha1 * scene.h() * scene.discretisation.sound_speed / 10.0;
-    (nu, nu_av)
+    (nu, artificial_viscosity_m2_s(scene))
 }
 
 /// Every metric of the case.

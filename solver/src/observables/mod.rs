@@ -172,9 +172,11 @@ pub fn observe(
         wall_repulsion_energy_j,
         dissipated_laminar_j: d.of(Ledger::Laminar, false),
         dissipated_laminar_walls_j: d.of(Ledger::Laminar, true),
-        // the term acts between liquid particles only; its wall channel stays zero
+        // booked on one side each (between liquid particles; with wall particles): the other
+        // side stays zero
         dissipated_artificial_j: d.of(Ledger::Artificial, false) + d.of(Ledger::Artificial, true),
-        dissipated_wall_pressure_j: d.of(Ledger::WallPressure, false),
+        dissipated_wall_pressure_j: d.of(Ledger::WallPressure, true)
+            + d.of(Ledger::WallPressure, false),
         dissipated_density_reinit_j: d.density_reinit_j,
         energy_balance_j: kinetic_energy_j
             + interfacial_energy_j

@@ -153,6 +153,7 @@ impl Simulation {
                     *v += a * half;
                     *x += *v * dt;
                 });
+            // the booked terms' work in this kick, at its mean velocity (physics::forces::ledger)
             self.dissipation.kick(half);
             if continuity {
                 p.rho[..nf]
@@ -179,7 +180,7 @@ impl Simulation {
                 .par_iter_mut()
                 .zip(p.acc.par_iter())
                 .for_each(|(v, a)| *v += a * half);
-            self.dissipation.kick(half);
+            self.dissipation.kick(half); // likewise, with the new accelerations
             if continuity {
                 p.rho[..nf]
                     .par_iter_mut()

@@ -1,8 +1,7 @@
 //! The fused loop's side of the energy ledger ([`super::ledger`]): per fluid particle, the
 //! force of each booked term summed apart, and its power.
 //!
-//! Liquid pairs are summed lane by lane over the chunks (vectorised) and the lanes added at
-//! the end; the few pairs with wall particles are evaluated once more on their own and summed
+//! Liquid pairs are summed on a few lanes (vectorised), the lanes added at the end; the few pairs with wall particles are evaluated once more on their own and summed
 //! on the wall side. None of this touches the accelerations.
 
 use super::chunk::Relative;
@@ -49,16 +48,18 @@ impl Coefficients {
     }
 }
 
-/// The booked forces on one particle [N]: liquid side per lane, wall side summed.
+/// The booked forces on one particle [N]: liquid side per lane, wall side summed. Kept with
+/// the scratch of a rayon job and reset as its power is taken (a fresh one per particle made
+/// the booking up to 1.5 times as costly: the ignored test `booking_cost`).
 pub(super) struct Booked {
-    liquid: [[[f64; CHUNK]; 3]; Ledger::COUNT],
+    liquid: [[[f64; WIDTH]; 3]; Ledger::COUNT],
     wall: [Vec3; Ledger::COUNT],
 }
 
 impl Booked {
     pub fn new() -> Self {
         Booked {
-            liquid: [[[0.0; CHUNK]; 3]; Ledger::COUNT],
+            liquid: [[[0.0; WIDTH]; 3]; Ledger::COUNT],
             wall: [Vec3::zeros(); Ledger::COUNT],
         }
     }
@@ -105,41 +106,51 @@ impl Booked {
         let [ux, uy, uz] = rel.lanes(const { part(T::BOOKINGS, L) });
         let c = &c.0[L];
         let [ax, ay, az] = &mut self.liquid[L];
-        for n in 0..CHUNK {
-            let cn = if n < len { c[n] } else { 0.0 };
-            ax[n] += ux[n] * cn;
-            ay[n] += uy[n] * cn;
-            az[n] += uz[n] * cn;
+        for h in (0..CHUNK).step_by(WIDTH) {
+            for m in 0..WIDTH {
+                let n = h + m;
+                let cn = if n < len { c[n] } else { 0.0 };
+                ax[m] += ux[n] * cn;
+                ay[m] += uy[n] * cn;
+                az[m] += uz[n] * cn;
+            }
         }
     }
 
-    /// The power of the booked forces at velocity `v` [m/s] and acceleration `a` [m/s²].
+    /// The power of the booked forces at velocity `v` [m/s] and acceleration `a` [m/s²];
+    /// the sums are reset for the next particle.
     #[inline(always)]
-    pub fn power<T: PairTerm>(&self, v: &Vec3, a: &Vec3) -> Power {
+    pub fn take_power<T: PairTerm>(&mut self, v: &Vec3, a: &Vec3) -> Power {
         let mut p = Power::default();
         for l in 0..Ledger::COUNT {
             let Some(b) = T::BOOKINGS[l] else { continue };
             if b.liquid {
-                let acc = &self.liquid[l];
+                let acc = &mut self.liquid[l];
                 let f = Vec3::new(lane_sum(acc[0]), lane_sum(acc[1]), lane_sum(acc[2]));
+                *acc = [[0.0; WIDTH]; 3];
                 let c = channel(l, false);
                 p.velocity_w[c] = f.dot(v);
                 p.acceleration_w_s[c] = f.dot(a);
             }
             if b.walls {
+                let f = std::mem::replace(&mut self.wall[l], Vec3::zeros());
                 let c = channel(l, true);
-                p.velocity_w[c] = self.wall[l].dot(v);
-                p.acceleration_w_s[c] = self.wall[l].dot(a);
+                p.velocity_w[c] = f.dot(v);
+                p.acceleration_w_s[c] = f.dot(a);
             }
         }
         p
     }
 }
 
-/// The sum of a chunk's lanes, halving (vectorised).
+/// Lanes of the liquid-side sums: a chunk is folded onto them (one AVX-512 register; 16
+/// lanes, a whole chunk, made the booking twice as costly, 4 no cheaper; `booking_cost`).
+const WIDTH: usize = 8;
+
+/// The sum of the lanes, halving (vectorised).
 #[inline(always)]
-fn lane_sum(mut v: [f64; CHUNK]) -> f64 {
-    let mut width = CHUNK / 2;
+fn lane_sum(mut v: [f64; WIDTH]) -> f64 {
+    let mut width = WIDTH / 2;
     while width > 0 {
         for n in 0..width {
             v[n] += v[n + width];

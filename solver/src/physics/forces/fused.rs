@@ -46,6 +46,7 @@ struct Scratch<L> {
     rel: Relative,
     lanes: L,
     visit: [u32; ACTIVE_BITS],
+    booked: Booked,
 }
 
 /// Evaluates the accelerations [m/s²] of all fluid particles under the force terms `terms`,
@@ -61,6 +62,7 @@ pub fn fluid_forces<K: Kernel, T: PairTerm>(
         rel: Relative::new(),
         lanes: T::Lanes::new(),
         visit: [0u32; ACTIVE_BITS],
+        booked: Booked::new(),
     };
     // a scene without walls skips their bookings (a test per particle)
     let walls = const { ledger::any_walls(T::BOOKINGS) } && inp.state.pos.len() > inp.state.n_fluid;
@@ -141,7 +143,6 @@ fn particle<K: Kernel, T: PairTerm>(
     let own = terms.own(me);
     let mut f = Vec3::zeros();
     let mut dr = 0.0;
-    let mut booked = Booked::new();
     for chunk in near_entries(inp.lists, inp.active[i], i, &mut s.visit) {
         let rel = &mut s.rel;
         let mut has_wall = false;
@@ -200,7 +201,7 @@ fn particle<K: Kernel, T: PairTerm>(
                         n,
                         &rel.kinematics(&k, n, support2),
                     );
-                    booked.add_wall::<T>(&mut cl, rel, n, &sums);
+                    s.booked.add_wall::<T>(&mut cl, rel, n, &sums);
                 }
             }
         }
@@ -212,7 +213,7 @@ fn particle<K: Kernel, T: PairTerm>(
                 dr += cd[n];
             }
         }
-        booked.add_liquid::<T>(rel, &cl, chunk.len());
+        s.booked.add_liquid::<T>(rel, &cl, chunk.len());
     }
     if T::FAR {
         terms.far(&own, &mut f, pi, inp.lists.far(i));
@@ -221,7 +222,7 @@ fn particle<K: Kernel, T: PairTerm>(
     ParticleOut {
         acc,
         rate: st.rho[i] * dr,
-        power: booked.power::<T>(&vi, &acc),
+        power: s.booked.take_power::<T>(&vi, &acc),
     }
 }
 

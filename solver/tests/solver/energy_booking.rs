@@ -56,6 +56,18 @@ fn power_of(s: &Simulation, acc: &[Vec3], a: &[Vec3]) -> (f64, f64, f64) {
     (pv, pa, abs)
 }
 
+/// The accelerations [m/s²] of the state of `s` under `term` alone (and gravity).
+fn alone<T: PairTerm>(s: &Simulation, term: T) -> Vec<Vec3> {
+    let mut acc = vec![Vec3::zeros(); s.particles.n_fluid];
+    let _ = fluid_forces(
+        &s.loop_input::<WendlandC2>(),
+        &(term, Off),
+        &mut acc,
+        &mut [],
+    );
+    acc
+}
+
 /// The booked power of `ledger`, both sides.
 fn booked(p: &Power, ledger: Ledger) -> (f64, f64) {
     let (l, w) = (
@@ -95,7 +107,6 @@ fn the_loop_books_each_terms_own_power_and_leaves_the_accelerations_alone() {
     assert_eq!(acc, plain, "booking changed the accelerations");
 
     // each booked term alone: its force is m (a − g), its power Σ f·v and Σ f·a
-    let mut alone = vec![Vec3::zeros(); n];
     let check = |name: &str, alone: &[Vec3], ledger: Ledger| {
         let (pv, pa, abs) = power_of(&s, alone, &acc);
         let (bv, ba) = booked(&power, ledger);
@@ -117,31 +128,22 @@ fn the_loop_books_each_terms_own_power_and_leaves_the_accelerations_alone() {
             "{name}: booked {ba:e} W/s, own {pa:e} W/s"
         );
     };
-    let _ = fluid_forces(
-        &inp,
-        &(s.laminar_viscosity_term(), Off),
-        &mut alone,
-        &mut [],
+    check(
+        "laminar",
+        &alone(&s, s.laminar_viscosity_term()),
+        Ledger::Laminar,
     );
-    check("laminar", &alone, Ledger::Laminar);
-    let _ = fluid_forces(
-        &inp,
-        &(s.artificial_viscosity_term(), Off),
-        &mut alone,
-        &mut [],
-    );
-    check("artificial", &alone, Ledger::Artificial);
+    let av = s.artificial_viscosity_term();
+    check("artificial", &alone(&s, av), Ledger::Artificial);
     // the walls' own pressure: the pressure term with the liquid's pressures zeroed
     let mut walls_only = s.clone();
     walls_only.particles.pressure[..n].fill(0.0);
-    let inp = walls_only.loop_input::<WendlandC2>();
-    let _ = fluid_forces(
-        &inp,
-        &(walls_only.pressure_term(), Off),
-        &mut alone,
-        &mut [],
+    let pressure = walls_only.pressure_term();
+    check(
+        "wall pressure",
+        &alone(&walls_only, pressure),
+        Ledger::WallPressure,
     );
-    check("wall pressure", &alone, Ledger::WallPressure);
     // the no-slip plate's share of laminar viscosity is booked on its own channel
     let walls = channel(Ledger::Laminar as usize, true);
     assert!(power.velocity_w[walls] != 0.0);

@@ -174,14 +174,7 @@ fn particle<K: Kernel, T: PairTerm>(
         let (mut ca, mut cb, mut cd) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
         let mut cl = Coefficients::new();
         for n in 0..CHUNK {
-            let mut sums = PairSums::default();
-            terms.pair(
-                &mut sums,
-                &own,
-                &s.lanes,
-                n,
-                &rel.kinematics(&k, n, support2),
-            );
+            let sums = pair_sums(terms, &own, &s.lanes, rel, &k, n, support2);
             ca[n] = sums.central;
             cb[n] = sums.shear;
             if T::RATE {
@@ -193,14 +186,7 @@ fn particle<K: Kernel, T: PairTerm>(
         if walls && has_wall {
             for n in 0..chunk.len() {
                 if rel.wall[n] {
-                    let mut sums = PairSums::default();
-                    terms.pair(
-                        &mut sums,
-                        &own,
-                        &s.lanes,
-                        n,
-                        &rel.kinematics(&k, n, support2),
-                    );
+                    let sums = pair_sums(terms, &own, &s.lanes, rel, &k, n, support2);
                     s.booked.add_wall::<T>(&mut cl, rel, n, &sums);
                 }
             }
@@ -224,6 +210,22 @@ fn particle<K: Kernel, T: PairTerm>(
         rate: st.rho[i] * dr,
         power: s.booked.take_power::<T>(&vi, &acc),
     }
+}
+
+/// The pair sums of the terms for the pair in lane `n`.
+#[inline(always)]
+fn pair_sums<K: Kernel, T: PairTerm>(
+    terms: &T,
+    own: &T::Own,
+    lanes: &T::Lanes,
+    rel: &Relative,
+    k: &K,
+    n: usize,
+    support2: f64,
+) -> PairSums {
+    let mut sums = PairSums::default();
+    terms.pair(&mut sums, own, lanes, n, &rel.kinematics(k, n, support2));
+    sums
 }
 
 /// The near entries of `i` that interact, in list order, as chunks: among the first

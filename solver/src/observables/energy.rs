@@ -21,7 +21,8 @@ use crate::neighbours::NeighbourLists;
 use crate::physics::forces::wall_repulsion::Monaghan1994WallRepulsion;
 use crate::state::Particles;
 
-/// Interfacial energy [J] (see [`Observables::interfacial_energy_j`]); zero without tension.
+/// Interfacial energy [J] (see [`super::Observables::interfacial_energy_j`]); zero without
+/// tension.
 pub fn interfacial_energy(model: &Model, p: &Particles, lists: &NeighbourLists) -> f64 {
     if !model.effects.interfacial_tension {
         return 0.0;

@@ -7,6 +7,7 @@
 //! compact binary encoding and an atomic rename).
 
 use crate::error::SimError;
+use crate::physics::forces::Dissipation;
 use crate::scene::{Scene, SceneError};
 use crate::simulation::{Simulation, StepTimings};
 use crate::state::Particles;
@@ -41,6 +42,8 @@ pub struct Checkpoint {
     pub builds: u64,
     /// Wall-clock time per part of the step so far [s].
     pub timings: StepTimings,
+    /// The energy dissipated so far and the booked power of the current accelerations.
+    pub dissipation: Dissipation,
 }
 
 mod scene_as_toml {
@@ -59,7 +62,7 @@ mod scene_as_toml {
 }
 
 /// Current [`Checkpoint::version`].
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 
 impl Simulation {
     /// The state between two steps.
@@ -77,6 +80,7 @@ impl Simulation {
             first_dt_s: self.first_dt_s,
             builds: self.search.builds,
             timings: self.timings,
+            dissipation: self.dissipation,
         }
     }
 
@@ -122,6 +126,7 @@ impl Simulation {
         (sim.time_s, sim.step, sim.last_dt_s) = (c.time_s, c.step, c.last_dt_s);
         (sim.max_speed2, sim.max_acc2, sim.first_dt_s) = (c.max_speed2, c.max_acc2, c.first_dt_s);
         sim.timings = c.timings;
+        sim.dissipation = c.dissipation;
         Ok(sim)
     }
 }

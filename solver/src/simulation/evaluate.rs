@@ -3,6 +3,7 @@
 
 use super::Simulation;
 use crate::kernel::Kernel;
+use crate::observables::compression_energy;
 use crate::physics::{density, walls};
 use crate::scene::{DensityScheme, Reinit};
 use crate::state::Vec3;
@@ -66,7 +67,7 @@ impl Simulation {
         // the accelerations and rates are written while the rest of the state is read
         let mut acc = std::mem::take(&mut self.particles.acc);
         let mut drho = std::mem::take(&mut self.drho_next);
-        self.pair_forces::<K>(&mut acc, &mut drho);
+        self.dissipation.power = self.pair_forces::<K>(&mut acc, &mut drho);
         self.particles.acc = acc;
         self.drho_next = drho;
         self.timings.forces_s += t1.elapsed().as_secs_f64();
@@ -94,7 +95,11 @@ impl Simulation {
             ),
             Reinit::None => return,
         };
+        // the filter changes the compression energy without any force doing work: booked
+        let before = compression_energy(m, p);
         self.particles.rho[..new.len()].copy_from_slice(&new);
+        let after = compression_energy(&self.model, &self.particles);
+        self.dissipation.density_reinit_j += before - after;
         self.timings.density_s += t0.elapsed().as_secs_f64();
     }
 }

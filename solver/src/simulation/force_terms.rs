@@ -7,7 +7,7 @@ use crate::kernel::Kernel;
 use crate::physics::forces::Monaghan1994WallRepulsion;
 use crate::physics::forces::{
     fluid_forces, ArtificialViscosity, ContinuityRate, LaminarViscosity, LoopInput, Neighbourhood,
-    Off, Pressure,
+    Off, Power, Pressure,
 };
 use crate::physics::surface_tension::PairwisePotential;
 use crate::state::Vec3;
@@ -41,9 +41,11 @@ macro_rules! with_terms {
 impl Simulation {
     /// Accelerations [m/s²] of the fluid particles under every declared term of the current
     /// state (densities, pressures and neighbour lists as they are), and with the continuity
-    /// scheme their density rates [kg/(m³ s)] (`drho` empty otherwise). The step calls it
-    /// after the density; public for tests and benchmarks.
-    pub fn pair_forces<K: Kernel>(&self, acc: &mut [Vec3], drho: &mut [f64]) {
+    /// scheme their density rates [kg/(m³ s)] (`drho` empty otherwise); returns the power of
+    /// the dissipative terms at the current velocities (the energy budget,
+    /// [`crate::physics::forces::ledger`]). The step calls it after the density; public for
+    /// tests and benchmarks.
+    pub fn pair_forces<K: Kernel>(&self, acc: &mut [Vec3], drho: &mut [f64]) -> Power {
         let e = &self.model.effects;
         let inp = self.loop_input::<K>();
         with_terms!(terms => fluid_forces(&inp, &terms, acc, drho);
@@ -53,7 +55,7 @@ impl Simulation {
             if e.laminar_viscosity => self.laminar_viscosity_term(),
             if e.continuity() => self.continuity_term(),
             if e.wall_repulsion => self.wall_repulsion_term(),
-        );
+        )
     }
 
     /// What the force loop reads besides the terms, for the current state.

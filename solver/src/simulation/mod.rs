@@ -10,6 +10,10 @@
 //! 5. kick: `v ← v + ½dt a_{n+1}` (continuity: trapezoidal corrector `ρ ← ρ + ½dt (D_{n+1} −
 //!    D_n)`), health check, and periodic density re-initialisation.
 //!
+//! Each kick also books the work of the dissipative terms in it (the energy budget,
+//! [`crate::physics::forces::ledger`]): a few multiplications per step, from the power the
+//! force loop returns.
+//!
 //! The step reads only the resolved [`Model`]; the scene is kept for checkpoints and records.
 
 mod evaluate;
@@ -23,6 +27,7 @@ use crate::kernel::Kernel;
 use crate::model::Model;
 use crate::neighbours::NeighbourSearch;
 use crate::observables::{observe, Observables};
+use crate::physics::forces::Dissipation;
 use crate::scene::Scene;
 use crate::setup::{build_particles, Inventory};
 use crate::state::Particles;
@@ -67,6 +72,9 @@ pub struct Simulation {
     pub last_dt_s: f64,
     /// Time per part of the step.
     pub timings: StepTimings,
+    /// The energy the dissipative terms and the density re-initialisation took out so far,
+    /// and the booked power of the current accelerations.
+    pub dissipation: Dissipation,
     pub(crate) max_speed2: f64,
     pub(crate) max_acc2: f64,
     /// The stable step of the initial state [s] (for the collapse check).
@@ -117,6 +125,7 @@ impl Simulation {
             step: 0,
             last_dt_s: 0.0,
             timings: StepTimings::default(),
+            dissipation: Dissipation::default(),
             max_speed2: 0.0,
             max_acc2: 0.0,
             first_dt_s: 0.0,
@@ -145,6 +154,8 @@ impl Simulation {
                     *v += a * half;
                     *x += *v * dt;
                 });
+            // the booked terms' work in this kick, at its mean velocity (physics::forces::ledger)
+            self.dissipation.kick(half);
             if continuity {
                 p.rho[..nf]
                     .par_iter_mut()
@@ -170,6 +181,7 @@ impl Simulation {
                 .par_iter_mut()
                 .zip(p.acc.par_iter())
                 .for_each(|(v, a)| *v += a * half);
+            self.dissipation.kick(half); // likewise, with the new accelerations
             if continuity {
                 p.rho[..nf]
                     .par_iter_mut()
@@ -232,6 +244,7 @@ impl Simulation {
             &self.model,
             &self.particles,
             &self.search.lists,
+            &self.dissipation,
             self.time_s,
             self.last_dt_s,
             self.step,

@@ -1,5 +1,6 @@
 //! A run resumed from a checkpoint continues bit for bit as if it had never stopped — with
-//! walls, the continuity density (its rate is state), and neighbour rebuilds in between.
+//! walls, the continuity density (its rate is state), and neighbour rebuilds in between —
+//! and so does its energy budget (the energy dissipated so far and the booked power are state).
 
 use super::common::{advance, block_scene, sim};
 use solver::Simulation;
@@ -19,6 +20,18 @@ fn bits(s: &Simulation) -> Vec<u64> {
                 .map(|x| x.to_bits()),
         )
         .chain([s.time_s.to_bits(), s.last_dt_s.to_bits()])
+        .chain(dissipation_bits(s))
+        .collect()
+}
+
+fn dissipation_bits(s: &Simulation) -> Vec<u64> {
+    let d = &s.dissipation;
+    d.dissipated_j
+        .iter()
+        .chain(&d.power.velocity_w)
+        .chain(&d.power.acceleration_w_s)
+        .chain([&d.density_reinit_j])
+        .map(|x| x.to_bits())
         .collect()
 }
 
@@ -56,6 +69,14 @@ shape = { kind = "disk", center = [0.0, 0.0, -5.0e-4], radius = 1.2e-3 }
     );
     assert_eq!(a.step, b.step);
     assert_eq!(bits(&a), bits(&b), "resumed state differs");
+    // the budget is not trivially equal: every ledger of this scene has booked something
+    // (laminar and artificial viscosity, the walls' pressure, the Shepard filter)
+    let d = &a.dissipation;
+    assert!(
+        d.dissipated_j.iter().filter(|x| **x != 0.0).count() >= 3,
+        "{d:?}"
+    );
+    assert!(d.density_reinit_j != 0.0);
 
     // a checkpoint of a different scene is refused with a message
     let mut wrong = saved;

@@ -7,6 +7,8 @@ mod common;
 mod conservation;
 mod determinism;
 mod effects;
+mod energy_booking;
+mod energy_budget;
 mod failures;
 mod fuzz_scenes;
 mod lattice_energy;

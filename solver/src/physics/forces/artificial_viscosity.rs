@@ -5,6 +5,7 @@
 //!
 //! Between fluid particles only: wall lanes are switched off.
 
+use super::ledger::{Booking, Ledger, Part};
 use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The artificial viscosity term.
@@ -62,6 +63,13 @@ impl Lanes for ArtificialLanes {
 
 impl PairTerm for ArtificialViscosity<'_> {
     const USES_VELOCITY: bool = true;
+    /// Dissipative, between fluid particles only.
+    const BOOKING: Option<Booking> = Some(Booking {
+        ledger: Ledger::Artificial,
+        part: Part::Central,
+        liquid: true,
+        walls: false,
+    });
     /// `(m_i [kg], ρ_i [kg/m³])`.
     type Own = (f64, f64);
     type Lanes = ArtificialLanes;
@@ -91,10 +99,12 @@ impl PairTerm for ArtificialViscosity<'_> {
         let pi_ij = (-self.alpha1 * self.c_m_s * phi + self.alpha2 * phi * phi)
             / (0.5 * (rho_i + l.rho[n]));
         let v = m_i * l.m[n] * pi_ij * k.dw_r;
-        s.central -= if k.inside && l.fluid[n] && k.vr < 0.0 {
+        let a = if k.inside && l.fluid[n] && k.vr < 0.0 {
             v
         } else {
             0.0
         };
+        s.central -= a;
+        s.booked[Ledger::Artificial as usize] = -a;
     }
 }

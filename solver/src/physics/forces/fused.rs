@@ -6,10 +6,16 @@
 //! the shear coefficient `b_ij` summed over the terms in list order. All parallel work gathers
 //! per particle in the fixed order of its neighbour list, so the result is bitwise identical
 //! for any thread count.
+//!
+//! Booked terms ([`super::ledger`]) are also summed apart per particle ([`super::booking`]);
+//! the loop returns their power, summed in blocks of [`BLOCK`] particles in particle order and
+//! then over the blocks in order — a fixed order for any thread count. The accelerations do
+//! not depend on it.
 
-use super::term::{
-    Lanes, Neighbour, Neighbourhood, PairKinematics, PairSums, PairTerm, Particle, CHUNK,
-};
+use super::booking::{Booked, Coefficients};
+use super::chunk::Relative;
+use super::ledger::{self, Power};
+use super::term::{Lanes, Neighbour, Neighbourhood, PairSums, PairTerm, Particle, CHUNK};
 use crate::kernel::Kernel;
 use crate::neighbours::{NeighbourLists, ACTIVE_BITS};
 use crate::state::Vec3;
@@ -31,28 +37,8 @@ pub struct LoopInput<'a, K: Kernel> {
     pub active: &'a [u64],
 }
 
-/// `x_i − x_j` [m] and `v_i − v_j` [m/s] of one chunk of neighbours.
-struct Relative {
-    dx: [f64; CHUNK],
-    dy: [f64; CHUNK],
-    dz: [f64; CHUNK],
-    vx: [f64; CHUNK],
-    vy: [f64; CHUNK],
-    vz: [f64; CHUNK],
-}
-
-impl Relative {
-    fn new() -> Self {
-        Relative {
-            dx: [0.0; CHUNK],
-            dy: [0.0; CHUNK],
-            dz: [0.0; CHUNK],
-            vx: [0.0; CHUNK],
-            vy: [0.0; CHUNK],
-            vz: [0.0; CHUNK],
-        }
-    }
-}
+/// Particles per block of the power sums (a few blocks per thread even for small scenes).
+pub const BLOCK: usize = 256;
 
 /// Scratch of one rayon job (allocated once per job, not per chunk or particle: zeroing the
 /// gather buffers per chunk cost 4 % of a step).
@@ -60,46 +46,90 @@ struct Scratch<L> {
     rel: Relative,
     lanes: L,
     visit: [u32; ACTIVE_BITS],
+    booked: Booked,
 }
 
 /// Evaluates the accelerations [m/s²] of all fluid particles under the force terms `terms`,
-/// and, if a term contributes to the density rate, `dρ/dt` [kg/(m³ s)] into `drho`.
+/// and, if a term contributes to the density rate, `dρ/dt` [kg/(m³ s)] into `drho`; returns
+/// the power of the booked terms ([`super::ledger`]).
 pub fn fluid_forces<K: Kernel, T: PairTerm>(
     inp: &LoopInput<K>,
     terms: &T,
     acc: &mut [Vec3],
     drho: &mut [f64],
-) {
+) -> Power {
     let scratch = || Scratch {
         rel: Relative::new(),
         lanes: T::Lanes::new(),
         visit: [0u32; ACTIVE_BITS],
+        booked: Booked::new(),
     };
-    if T::RATE {
+    // a scene without walls skips their bookings (a test per particle)
+    let walls = const { ledger::any_walls(T::BOOKINGS) } && inp.state.pos.len() > inp.state.n_fluid;
+    let blocks: Vec<Power> = if T::RATE {
         assert_eq!(drho.len(), acc.len(), "a density rate per fluid particle");
-        acc.par_iter_mut()
-            .zip(drho.par_iter_mut())
+        acc.par_chunks_mut(BLOCK)
+            .zip(drho.par_chunks_mut(BLOCK))
             .enumerate()
-            .for_each_init(scratch, |s, (i, (a, d))| {
-                let (ai, di) = particle(inp, terms, s, i);
-                *a = ai;
-                *d = di;
-            });
+            .map_init(scratch, |s, (b, (ab, db))| {
+                let mut sum = Power::default();
+                for (k, (a, d)) in ab.iter_mut().zip(db.iter_mut()).enumerate() {
+                    let out = particle(inp, terms, s, b * BLOCK + k, walls);
+                    (*a, *d) = (out.acc, out.rate);
+                    add_booked::<T>(&mut sum, &out.power);
+                }
+                sum
+            })
+            .collect()
     } else {
-        acc.par_iter_mut()
+        acc.par_chunks_mut(BLOCK)
             .enumerate()
-            .for_each_init(scratch, |s, (i, a)| *a = particle(inp, terms, s, i).0);
+            .map_init(scratch, |s, (b, ab)| {
+                let mut sum = Power::default();
+                for (k, a) in ab.iter_mut().enumerate() {
+                    let out = particle(inp, terms, s, b * BLOCK + k, walls);
+                    *a = out.acc;
+                    add_booked::<T>(&mut sum, &out.power);
+                }
+                sum
+            })
+            .collect()
+    };
+    let mut total = Power::default();
+    for b in &blocks {
+        add_booked::<T>(&mut total, b);
+    }
+    total
+}
+
+/// Adds `p` to `sum` if some term of `T` is booked (nothing to add otherwise).
+#[inline(always)]
+fn add_booked<T: PairTerm>(sum: &mut Power, p: &Power) {
+    if const { ledger::any(T::BOOKINGS) } {
+        sum.add(p);
     }
 }
 
-/// The acceleration [m/s²] and density rate [kg/(m³ s)] of fluid particle `i`.
+/// What the loop computes for one fluid particle.
+struct ParticleOut {
+    /// Acceleration [m/s²].
+    acc: Vec3,
+    /// Density rate [kg/(m³ s)].
+    rate: f64,
+    /// Its share of the booked power.
+    power: Power,
+}
+
+/// The acceleration [m/s²], density rate [kg/(m³ s)] and booked power of fluid particle `i`;
+/// `walls`: some term books wall pairs and the scene has walls.
 #[inline(always)]
 fn particle<K: Kernel, T: PairTerm>(
     inp: &LoopInput<K>,
     terms: &T,
     s: &mut Scratch<T::Lanes>,
     i: usize,
-) -> (Vec3, f64) {
+    walls: bool,
+) -> ParticleOut {
     let st = &inp.state;
     let k = inp.kernel;
     let support = k.support_m();
@@ -115,6 +145,7 @@ fn particle<K: Kernel, T: PairTerm>(
     let mut dr = 0.0;
     for chunk in near_entries(inp.lists, inp.active[i], i, &mut s.visit) {
         let rel = &mut s.rel;
+        let mut has_wall = false;
         for (n, &j) in chunk.iter().enumerate() {
             let j = j as usize;
             let d = inp.lists.delta(pi, st.pos[j]);
@@ -132,31 +163,32 @@ fn particle<K: Kernel, T: PairTerm>(
                 phase: st.phase[j] as usize,
                 is_wall: j >= st.n_fluid,
             };
+            if walls {
+                rel.wall[n] = nb.is_wall;
+                has_wall |= nb.is_wall;
+            }
             terms.gather(&own, &mut s.lanes, n, nb);
         }
         // every pair term of the chunk, branch-free (the compiler vectorises this loop); lanes
         // past the chunk's end hold a previous chunk's values: computed, never added
         let (mut ca, mut cb, mut cd) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
+        let mut cl = Coefficients::new();
         for n in 0..CHUNK {
-            let r2 = rel.dx[n] * rel.dx[n] + rel.dy[n] * rel.dy[n] + rel.dz[n] * rel.dz[n];
-            let r = r2.sqrt();
-            let ir = 1.0 / r;
-            let apart = r2 > 0.0;
-            let kin = PairKinematics {
-                r2,
-                r,
-                ir,
-                apart,
-                inside: apart && r2 < support2,
-                dw_r: k.dw_dr_inside(r.min(support)) * ir, // dW/dr / r [1/m⁵]
-                vr: rel.vx[n] * rel.dx[n] + rel.vy[n] * rel.dy[n] + rel.vz[n] * rel.dz[n],
-            };
-            let mut sums = PairSums::default();
-            terms.pair(&mut sums, &own, &s.lanes, n, &kin);
+            let sums = pair_sums(terms, &own, &s.lanes, rel, &k, n, support2);
             ca[n] = sums.central;
             cb[n] = sums.shear;
             if T::RATE {
                 cd[n] = sums.rate;
+            }
+            cl.store::<T>(n, &sums);
+        }
+        // pairs with wall particles (few chunks have any): the terms once more for them alone
+        if walls && has_wall {
+            for n in 0..chunk.len() {
+                if rel.wall[n] {
+                    let sums = pair_sums(terms, &own, &s.lanes, rel, &k, n, support2);
+                    s.booked.add_wall::<T>(&mut cl, rel, n, &sums);
+                }
             }
         }
         for n in 0..chunk.len() {
@@ -167,11 +199,33 @@ fn particle<K: Kernel, T: PairTerm>(
                 dr += cd[n];
             }
         }
+        s.booked.add_liquid::<T>(rel, &cl, chunk.len());
     }
     if T::FAR {
         terms.far(&own, &mut f, pi, inp.lists.far(i));
     }
-    (f / st.mass[me.phase] + inp.gravity, st.rho[i] * dr)
+    let acc = f / st.mass[me.phase] + inp.gravity;
+    ParticleOut {
+        acc,
+        rate: st.rho[i] * dr,
+        power: s.booked.take_power::<T>(&vi, &acc),
+    }
+}
+
+/// The pair sums of the terms for the pair in lane `n`.
+#[inline(always)]
+fn pair_sums<K: Kernel, T: PairTerm>(
+    terms: &T,
+    own: &T::Own,
+    lanes: &T::Lanes,
+    rel: &Relative,
+    k: &K,
+    n: usize,
+    support2: f64,
+) -> PairSums {
+    let mut sums = PairSums::default();
+    terms.pair(&mut sums, own, lanes, n, &rel.kinematics(k, n, support2));
+    sums
 }
 
 /// The near entries of `i` that interact, in list order, as chunks: among the first

@@ -5,6 +5,7 @@
 //!
 //! Free-slip walls take no part: their lanes carry `μ = 0`.
 
+use super::ledger::{Booking, Ledger, Part};
 use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The laminar viscosity term.
@@ -46,6 +47,13 @@ pub struct LaminarOwn<'a> {
 
 impl<'a> PairTerm for LaminarViscosity<'a> {
     const USES_VELOCITY: bool = true;
+    /// Dissipative; at no-slip walls it couples the liquid to the walls' ghost velocity.
+    const BOOKING: Option<Booking> = Some(Booking {
+        ledger: Ledger::Laminar,
+        part: Part::Shear,
+        liquid: true,
+        walls: true,
+    });
     type Own = LaminarOwn<'a>;
     type Lanes = LaminarLanes;
 
@@ -76,6 +84,8 @@ impl<'a> PairTerm for LaminarViscosity<'a> {
     ) {
         // Eq. (11), Natsui 2021: 2μiμj/(μi+μj) (V_i² + V_j²) (dW/dr / r) v_ij
         let v = l.mu[n] * (own.v2 + l.v2[n]) * k.dw_r;
-        s.shear += if k.inside { v } else { 0.0 };
+        let b = if k.inside { v } else { 0.0 };
+        s.shear += b;
+        s.booked[Ledger::Laminar as usize] = b;
     }
 }

@@ -18,9 +18,12 @@
 //! `i`-on-`j` one (commutative products and sums), which conserves momentum to round-off.
 
 pub mod artificial_viscosity;
+mod booking;
+mod chunk;
 pub mod continuity;
 pub mod fused;
 pub mod laminar_viscosity;
+pub mod ledger;
 pub mod pressure;
 pub mod term;
 pub mod wall_repulsion;
@@ -29,6 +32,7 @@ pub use artificial_viscosity::ArtificialViscosity;
 pub use continuity::ContinuityRate;
 pub use fused::{fluid_forces, LoopInput};
 pub use laminar_viscosity::LaminarViscosity;
+pub use ledger::{Dissipation, Ledger, Power};
 pub use pressure::Pressure;
 pub use term::{Neighbourhood, Off, PairTerm};
 pub use wall_repulsion::Monaghan1994WallRepulsion;

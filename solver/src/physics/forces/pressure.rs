@@ -2,8 +2,12 @@
 //! `F_i = − Σ_j (p_i V_i² + p_j V_j²) ∇_i W_ij` [N].
 //!
 //! Acting on wall neighbours too, with the walls' extrapolated pressure (Adami et al. 2012):
-//! that is what keeps the liquid out of a wall.
+//! that is what keeps the liquid out of a wall. The walls' own part `−p_w V_w² ∇_i W_iw` is
+//! the gradient of no energy of the liquid (the wall pressure is extrapolated, not a state):
+//! its work is booked in the energy budget ([`super::ledger`]); the rest of the term is the
+//! gradient of the compression energy (`crate::observables::compression_energy`).
 
+use super::ledger::{Booking, Ledger, Part};
 use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 
 /// The pressure term.
@@ -27,6 +31,13 @@ impl Lanes for PressureLanes {
 }
 
 impl PairTerm for Pressure<'_> {
+    /// The walls' own part (module doc).
+    const BOOKING: Option<Booking> = Some(Booking {
+        ledger: Ledger::WallPressure,
+        part: Part::Central,
+        liquid: false,
+        walls: true,
+    });
     /// `p_i V_i²` [N·m].
     type Own = f64;
     type Lanes = PressureLanes;
@@ -45,5 +56,8 @@ impl PairTerm for Pressure<'_> {
     fn pair(&self, s: &mut PairSums, pv_i: &f64, l: &PressureLanes, n: usize, k: &PairKinematics) {
         let v = (pv_i + l.pv[n]) * k.dw_r; // Eq. (11), Natsui 2021: −(p_i V_i² + p_j V_j²) ∇_i W_ij
         s.central -= if k.inside { v } else { 0.0 };
+        // the neighbour's own part, booked for wall neighbours only
+        let w = l.pv[n] * k.dw_r;
+        s.booked[Ledger::WallPressure as usize] = if k.inside { -w } else { 0.0 };
     }
 }

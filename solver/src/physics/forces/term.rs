@@ -8,10 +8,16 @@
 //! `a_ij (x_i − x_j) + b_ij (v_i − v_j)` with `a_ij = a_ji`, `b_ij = b_ji`, so `F_ji = −F_ij`
 //! to the last bit.
 //!
+//! A term whose work the energy budget books apart ([`super::ledger`]: the viscosities, the
+//! walls' own pressure) declares a [`Booking`] and also writes the coefficient of the force
+//! it books into [`PairSums::booked`]; the loop sums that force apart. The totals do not
+//! depend on it.
+//!
 //! Terms are combined into a list by nesting pairs, `(A, (B, (C, Off)))`, evaluated in list
 //! order; [`Off`] is the empty term: a term a scene does not declare is replaced by `Off`, and
 //! every line of it compiles away.
 
+use super::ledger::{self, Booking, Bookings, Ledger};
 use crate::state::Vec3;
 
 /// Neighbours processed together by the pair loop (measured, per step of the 20 k cube at
@@ -88,6 +94,9 @@ pub struct PairSums {
     pub shear: f64,
     /// The pair's part of `Σ_j (…)` in `dρ_i/dt = ρ_i Σ_j (…)` [1/s].
     pub rate: f64,
+    /// Per ledger, the coefficient [N/m or N·s/m, by its [`Booking::part`]] of the force the
+    /// term booked to it books, written by that term.
+    pub booked: [f64; Ledger::COUNT],
 }
 
 /// Gathered per-neighbour data of a term: created once per rayon job, refilled per chunk.
@@ -119,6 +128,11 @@ pub trait PairTerm: Sync {
     const RATE: bool = false;
     /// Whether the term reaches beyond the kernel support (the lists' far part).
     const FAR: bool = false;
+    /// The ledger of a term whose work is booked apart ([`super::ledger`]); such a term writes
+    /// `PairSums::booked[ledger]` in [`PairTerm::pair`].
+    const BOOKING: Option<Booking> = None;
+    /// Per ledger, the booking of the term of the list booked to it.
+    const BOOKINGS: Bookings = ledger::single(Self::BOOKING);
     /// What the term needs of particle `i`, computed once per particle.
     type Own: Copy;
     /// What the term gathers of each neighbour.
@@ -168,6 +182,18 @@ impl<A: PairTerm, B: PairTerm> PairTerm for (A, B) {
     const USES_VELOCITY: bool = (A::ON && A::USES_VELOCITY) || (B::ON && B::USES_VELOCITY);
     const RATE: bool = (A::ON && A::RATE) || (B::ON && B::RATE);
     const FAR: bool = (A::ON && A::FAR) || (B::ON && B::FAR);
+    const BOOKINGS: Bookings = ledger::merge(
+        if A::ON {
+            A::BOOKINGS
+        } else {
+            ledger::NO_BOOKINGS
+        },
+        if B::ON {
+            B::BOOKINGS
+        } else {
+            ledger::NO_BOOKINGS
+        },
+    );
     type Own = (A::Own, B::Own);
     type Lanes = (A::Lanes, B::Lanes);
 

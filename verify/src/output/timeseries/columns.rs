@@ -42,6 +42,24 @@ pub enum RunColumn {
     KineticEnergy,
     /// Interfacial energy [J].
     InterfacialEnergy,
+    /// Compression (EOS) energy of the liquid [J].
+    CompressionEnergy,
+    /// Gravitational potential energy `−Σ m g·x` [J].
+    GravityEnergy,
+    /// Potential energy of the liquid–wall repulsion [J].
+    WallRepulsionEnergy,
+    /// Energy dissipated by laminar viscosity between liquid particles [J].
+    DissipatedLaminar,
+    /// Energy the liquid lost through laminar viscosity at no-slip walls [J].
+    DissipatedLaminarWalls,
+    /// Energy dissipated by artificial viscosity [J].
+    DissipatedArtificial,
+    /// Energy the liquid lost to the walls' own (extrapolated) pressure [J].
+    DissipatedWallPressure,
+    /// Compression energy removed by density re-initialisation [J].
+    DissipatedDensityReinit,
+    /// The energy budget: the energies plus everything dissipated [J].
+    EnergyBalance,
     /// Total momentum along an axis [kg m/s].
     Momentum(Axis),
     /// Largest particle speed [m/s].
@@ -54,12 +72,21 @@ pub enum RunColumn {
 
 impl RunColumn {
     /// Every column of the whole run, in file order.
-    pub const ALL: [RunColumn; 11] = [
+    pub const ALL: [RunColumn; 20] = [
         RunColumn::Time,
         RunColumn::Dt,
         RunColumn::Step,
         RunColumn::KineticEnergy,
         RunColumn::InterfacialEnergy,
+        RunColumn::CompressionEnergy,
+        RunColumn::GravityEnergy,
+        RunColumn::WallRepulsionEnergy,
+        RunColumn::DissipatedLaminar,
+        RunColumn::DissipatedLaminarWalls,
+        RunColumn::DissipatedArtificial,
+        RunColumn::DissipatedWallPressure,
+        RunColumn::DissipatedDensityReinit,
+        RunColumn::EnergyBalance,
         RunColumn::Momentum(Axis::X),
         RunColumn::Momentum(Axis::Y),
         RunColumn::Momentum(Axis::Z),
@@ -76,6 +103,15 @@ impl RunColumn {
             RunColumn::Step => "step".into(),
             RunColumn::KineticEnergy => "kinetic_energy_J".into(),
             RunColumn::InterfacialEnergy => "interfacial_energy_J".into(),
+            RunColumn::CompressionEnergy => "compression_energy_J".into(),
+            RunColumn::GravityEnergy => "gravity_energy_J".into(),
+            RunColumn::WallRepulsionEnergy => "wall_repulsion_energy_J".into(),
+            RunColumn::DissipatedLaminar => "dissipated_laminar_J".into(),
+            RunColumn::DissipatedLaminarWalls => "dissipated_laminar_walls_J".into(),
+            RunColumn::DissipatedArtificial => "dissipated_artificial_J".into(),
+            RunColumn::DissipatedWallPressure => "dissipated_wall_pressure_J".into(),
+            RunColumn::DissipatedDensityReinit => "dissipated_density_reinit_J".into(),
+            RunColumn::EnergyBalance => "energy_balance_J".into(),
             RunColumn::Momentum(ax) => format!("momentum_{}_kg_m_s", ax.name()),
             RunColumn::MaxSpeed => "max_speed_m_s".into(),
             RunColumn::MaxDensityDeviation => "max_density_deviation".into(),
@@ -91,6 +127,15 @@ impl RunColumn {
             RunColumn::Step => o.step as f64,
             RunColumn::KineticEnergy => o.kinetic_energy_j,
             RunColumn::InterfacialEnergy => o.interfacial_energy_j,
+            RunColumn::CompressionEnergy => o.compression_energy_j,
+            RunColumn::GravityEnergy => o.gravity_energy_j,
+            RunColumn::WallRepulsionEnergy => o.wall_repulsion_energy_j,
+            RunColumn::DissipatedLaminar => o.dissipated_laminar_j,
+            RunColumn::DissipatedLaminarWalls => o.dissipated_laminar_walls_j,
+            RunColumn::DissipatedArtificial => o.dissipated_artificial_j,
+            RunColumn::DissipatedWallPressure => o.dissipated_wall_pressure_j,
+            RunColumn::DissipatedDensityReinit => o.dissipated_density_reinit_j,
+            RunColumn::EnergyBalance => o.energy_balance_j,
             RunColumn::Momentum(ax) => o.momentum_kg_m_s[ax.index()],
             RunColumn::MaxSpeed => o.max_speed_m_s,
             RunColumn::MaxDensityDeviation => o.max_density_deviation,

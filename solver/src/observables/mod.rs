@@ -2,9 +2,21 @@
 //!
 //! Sums run serially in particle order, which is fixed by the state (not by the thread count),
 //! so the values are reproducible bit for bit.
+//!
+//! The energy budget: the kinetic, interfacial, compression, gravitational and wall-repulsion
+//! energies are functions of the state ([`energy`]); what the dissipative terms and the
+//! density re-initialisation took out is booked at every step by the simulation
+//! ([`Dissipation`]). Their sum, [`Observables::energy_balance_j`], is constant up to the
+//! time integration's error and the parts of the model that are not conservative (see
+//! [`energy`]).
+
+mod energy;
+
+pub use energy::{compression_energy, gravity_energy, interfacial_energy, wall_repulsion_energy};
 
 use crate::model::Model;
 use crate::neighbours::NeighbourLists;
+use crate::physics::forces::{Dissipation, Ledger};
 use crate::state::{Particles, Vec3};
 use serde::{Deserialize, Serialize};
 
@@ -48,6 +60,32 @@ pub struct Observables {
     /// `Σ_i [½ C_aa B − ½ Σ_{j liquid} C_ij P(r_ij) − Σ_{w wall} C_iw P(r_iw)]`, `B` the bulk
     /// lattice sum. On a lattice it equals σ times the free area (physics.md §4).
     pub interfacial_energy_j: f64,
+    /// Compression (EOS) energy of the liquid [J] ([`compression_energy`]).
+    pub compression_energy_j: f64,
+    /// Gravitational potential energy `−Σ m g·x` [J] (zero without gravity).
+    pub gravity_energy_j: f64,
+    /// Potential energy of the liquid–wall repulsion [J] (zero without it,
+    /// [`wall_repulsion_energy`]).
+    pub wall_repulsion_energy_j: f64,
+    /// Energy dissipated by laminar viscosity between liquid particles since the start [J].
+    pub dissipated_laminar_j: f64,
+    /// Energy the liquid lost through laminar viscosity at no-slip walls since the start [J]:
+    /// the work of the liquid–wall pair forces, `−∫ Σ f_iw·v_i dt`. The walls' ghost velocity
+    /// (Adami 2012) mirrors the liquid's, so this is mostly the dissipation of the layer next
+    /// to the wall, but it is not sign-definite step by step.
+    pub dissipated_laminar_walls_j: f64,
+    /// Energy dissipated by artificial viscosity since the start [J].
+    pub dissipated_artificial_j: f64,
+    /// Energy the liquid lost to the walls' own pressure `p_w V_w²` since the start [J]: not
+    /// a physical dissipation but the work of a force that is the gradient of no energy (the
+    /// extrapolated wall pressure, Adami 2012); either sign.
+    pub dissipated_wall_pressure_j: f64,
+    /// Compression energy removed by the density re-initialisations since the start [J]
+    /// (either sign).
+    pub dissipated_density_reinit_j: f64,
+    /// The energy budget [J]: kinetic + interfacial + compression + gravity + wall repulsion
+    /// + everything dissipated. Constant for a conservative discretisation.
+    pub energy_balance_j: f64,
     /// Total momentum [kg m/s].
     pub momentum_kg_m_s: [f64; 3],
     /// Largest particle speed [m/s].
@@ -59,11 +97,12 @@ pub struct Observables {
     pub max_compression: f64,
 }
 
-/// Computes the observables of `p` at time `time_s` [s].
+/// Computes the observables of `p` at time `time_s` [s], with the energy dissipated so far.
 pub fn observe(
     model: &Model,
     p: &Particles,
     lists: &NeighbourLists,
+    dissipation: &Dissipation,
     time_s: f64,
     dt_s: f64,
     step: u64,
@@ -115,38 +154,39 @@ pub fn observe(
             s.max_m = [f64::NAN; 3];
         }
     }
+    let kinetic_energy_j: f64 = phases.iter().map(|s| s.kinetic_energy_j).sum();
+    let interfacial_energy_j = interfacial_energy(model, p, lists);
+    let compression_energy_j = compression_energy(model, p);
+    let gravity_energy_j = gravity_energy(model, p);
+    let wall_repulsion_energy_j = wall_repulsion_energy(model, p, lists);
+    let d = dissipation;
     Observables {
         time_s,
         dt_s,
         step,
-        kinetic_energy_j: phases.iter().map(|s| s.kinetic_energy_j).sum(),
+        kinetic_energy_j,
         phases,
-        interfacial_energy_j: interfacial_energy(model, p, lists),
+        interfacial_energy_j,
+        compression_energy_j,
+        gravity_energy_j,
+        wall_repulsion_energy_j,
+        dissipated_laminar_j: d.of(Ledger::Laminar, false),
+        dissipated_laminar_walls_j: d.of(Ledger::Laminar, true),
+        // booked on one side each (between liquid particles; with wall particles): the other
+        // side stays zero
+        dissipated_artificial_j: d.of(Ledger::Artificial, false) + d.of(Ledger::Artificial, true),
+        dissipated_wall_pressure_j: d.of(Ledger::WallPressure, true)
+            + d.of(Ledger::WallPressure, false),
+        dissipated_density_reinit_j: d.density_reinit_j,
+        energy_balance_j: kinetic_energy_j
+            + interfacial_energy_j
+            + compression_energy_j
+            + gravity_energy_j
+            + wall_repulsion_energy_j
+            + d.total_j(),
         momentum_kg_m_s: momentum.into(),
         max_speed_m_s: max_speed2.sqrt(),
         max_density_deviation: max_dev,
         max_compression: max_comp,
     }
-}
-
-/// Interfacial energy [J] (see [`Observables::interfacial_energy_j`]); zero without tension.
-pub fn interfacial_energy(model: &Model, p: &Particles, lists: &NeighbourLists) -> f64 {
-    if !model.effects.interfacial_tension {
-        return 0.0;
-    }
-    let pot = &model.potential;
-    let mut e = 0.0;
-    for i in 0..p.n_fluid {
-        let a = p.phase[i] as usize;
-        let mut ei = 0.5 * model.pairs.c(a, a) * model.bulk_potential_sum_m3;
-        for &j in lists.all(i) {
-            let j = j as usize;
-            let r = lists.delta(p.pos[i], p.pos[j]).norm();
-            let c = model.pairs.c(a, p.phase[j] as usize);
-            let share = if j < p.n_fluid { 0.5 } else { 1.0 };
-            ei -= share * c * pot.p(r);
-        }
-        e += ei;
-    }
-    e
 }

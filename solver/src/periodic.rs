@@ -83,6 +83,21 @@ impl PeriodicBox {
         )
     }
 
+    /// Replaces the differences `(dx, dy, dz)` [m] of a chunk of pairs by their shortest
+    /// images (lanes of equal length; nothing to do in an open box). The pair loops gather
+    /// plain differences and call this once per chunk, so an open box pays one test per chunk
+    /// rather than one per pair.
+    #[inline(always)]
+    pub fn image_lanes(&self, dx: &mut [f64], dy: &mut [f64], dz: &mut [f64]) {
+        if !self.any {
+            return;
+        }
+        for (x, (y, z)) in dx.iter_mut().zip(dy.iter_mut().zip(dz.iter_mut())) {
+            let d = self.image(Vec3::new(*x, *y, *z));
+            (*x, *y, *z) = (d.x, d.y, d.z);
+        }
+    }
+
     /// `x_i − x_j` [m] under the minimum-image convention.
     #[inline(always)]
     pub fn delta(&self, xi: Vec3, xj: Vec3) -> Vec3 {

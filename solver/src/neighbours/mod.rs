@@ -486,19 +486,5 @@ impl<'a> RowCursor<'a> {
     }
 }
 
-/// All pairs `(i, j)`, `i ≠ j`, with `|x_i − x_j| < radius` by brute force (for tests).
-pub fn brute_force_pairs(pos: &[Vec3], radius_m: f64) -> Vec<(u32, u32)> {
-    let r2 = radius_m * radius_m;
-    let mut pairs = Vec::new();
-    for i in 0..pos.len() {
-        for j in 0..pos.len() {
-            if i != j && (pos[i] - pos[j]).norm_squared() < r2 {
-                pairs.push((i as u32, j as u32));
-            }
-        }
-    }
-    pairs
-}
-
 #[cfg(test)]
 mod tests;

@@ -179,12 +179,13 @@ impl NeighbourSearch {
                         }
                     };
                     let c = grid.coords(&pos[i]);
-                    let cells = neighbour_cells(&grid, c);
-                    for &cell in &cells {
+                    let (cells, n_cells) = neighbour_cells(&grid, c);
+                    let cells = &cells[..n_cells];
+                    for &cell in cells {
                         fluid.of(cell).iter().for_each(|&j| test(j as usize));
                     }
                     if i < n_fluid {
-                        for &cell in &cells {
+                        for &cell in cells {
                             walls
                                 .of(cell)
                                 .iter()
@@ -200,18 +201,20 @@ impl NeighbourSearch {
     }
 }
 
-/// The distinct cells around cell coordinates `c`, z slowest, x fastest.
-fn neighbour_cells(grid: &Grid, c: [i64; 3]) -> Vec<usize> {
+/// The distinct cells around cell coordinates `c`, z slowest, x fastest, and their number.
+fn neighbour_cells(grid: &Grid, c: [i64; 3]) -> ([usize; 27], usize) {
     let (xs, nx) = grid.around(c[0], 0);
     let (ys, ny) = grid.around(c[1], 1);
     let (zs, nz) = grid.around(c[2], 2);
-    let mut out = Vec::with_capacity(27);
+    let mut out = [0usize; 27];
+    let mut n = 0;
     for &z in &zs[..nz] {
         for &y in &ys[..ny] {
             for &x in &xs[..nx] {
-                out.push(grid.index([x, y, z]));
+                out[n] = grid.index([x, y, z]);
+                n += 1;
             }
         }
     }
-    out
+    (out, n)
 }

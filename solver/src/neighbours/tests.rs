@@ -35,7 +35,7 @@ fn check(n_fluid: usize, n_wall: usize, near: f64, far: f64, skin: f64, seed: u6
 }
 
 /// All pairs `(i, j)`, `i ≠ j`, closer than `radius_m` under the minimum image of `b`.
-fn brute_force_pairs_in(b: &PeriodicBox, pos: &[Vec3], radius_m: f64) -> Vec<(u32, u32)> {
+fn brute_force_pairs(b: &PeriodicBox, pos: &[Vec3], radius_m: f64) -> Vec<(u32, u32)> {
     let r2 = radius_m * radius_m;
     let mut pairs = Vec::new();
     for i in 0..pos.len() {
@@ -70,11 +70,11 @@ fn check_in(
 
     let near_cut = near + skin;
     let far_cut = far.max(near) + skin;
-    let expected_near: BTreeSet<(u32, u32)> = brute_force_pairs_in(&periodic, &pos, near_cut)
+    let expected_near: BTreeSet<(u32, u32)> = brute_force_pairs(&periodic, &pos, near_cut)
         .into_iter()
         .filter(|&(i, j)| (i as usize) < n_fluid || (j as usize) < n_fluid)
         .collect();
-    let expected_all: BTreeSet<(u32, u32)> = brute_force_pairs_in(&periodic, &pos, far_cut)
+    let expected_all: BTreeSet<(u32, u32)> = brute_force_pairs(&periodic, &pos, far_cut)
         .into_iter()
         .filter(|&(i, _)| (i as usize) < n_fluid)
         .collect();

@@ -44,8 +44,14 @@ pub fn summation<K: Kernel>(
             // order: the same sum, bit for bit, as a scalar loop
             for (c, chunk) in lists.near(i).chunks(CHUNK).enumerate() {
                 let mut r2 = [f64::INFINITY; CHUNK];
-                for (k, &j) in chunk.iter().enumerate() {
-                    r2[k] = lists.delta(pi, pos[j as usize]).norm_squared();
+                if lists.periodic.is_periodic() {
+                    for (k, &j) in chunk.iter().enumerate() {
+                        r2[k] = lists.delta(pi, pos[j as usize]).norm_squared();
+                    }
+                } else {
+                    for (k, &j) in chunk.iter().enumerate() {
+                        r2[k] = (pi - pos[j as usize]).norm_squared();
+                    }
                 }
                 let mut w = [0.0; CHUNK];
                 for k in 0..CHUNK {

@@ -148,7 +148,7 @@ fn particle<K: Kernel, T: PairTerm>(
         let mut has_wall = false;
         for (n, &j) in chunk.iter().enumerate() {
             let j = j as usize;
-            let d = inp.lists.delta(pi, st.pos[j]);
+            let d = pi - st.pos[j];
             rel.dx[n] = d.x;
             rel.dy[n] = d.y;
             rel.dz[n] = d.z;
@@ -169,6 +169,10 @@ fn particle<K: Kernel, T: PairTerm>(
             }
             terms.gather(&own, &mut s.lanes, n, nb);
         }
+        let m = chunk.len();
+        inp.lists
+            .periodic
+            .image_lanes(&mut rel.dx[..m], &mut rel.dy[..m], &mut rel.dz[..m]);
         // every pair term of the chunk, branch-free (the compiler vectorises this loop); lanes
         // past the chunk's end hold a previous chunk's values: computed, never added
         let (mut ca, mut cb, mut cd) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);

@@ -80,12 +80,15 @@ impl<'a> PairTerm for PairwisePotential<'a> {
                 ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for (k, &j) in chunk.iter().enumerate() {
                 let j = j as usize;
-                let d = self.periodic.delta(pi, self.pos[j]);
+                let d = pi - self.pos[j];
                 dx[k] = d.x;
                 dy[k] = d.y;
                 dz[k] = d.z;
                 c[k] = row[self.phase[j] as usize];
             }
+            let m = chunk.len();
+            self.periodic
+                .image_lanes(&mut dx[..m], &mut dy[..m], &mut dz[..m]);
             let mut s = [0.0; CHUNK];
             for k in 0..CHUNK {
                 let r2 = dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k];

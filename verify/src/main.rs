@@ -2,14 +2,16 @@
 
 use clap::{Parser, Subcommand};
 use solver::kernel::KernelKind;
+use solver::simulation::calibration::SlabDesign;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use verify::cases;
-use verify::diagnostics::lattice_moduli;
+use verify::diagnostics::{lattice_moduli, slab_tension};
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
 use verify::study::{run_all, StudyOptions};
+use verify::suite::overrides::SceneOverride;
 use verify::suite::runner::{self, SuiteOptions};
 use verify::suite::Fidelity;
 
@@ -51,6 +53,14 @@ struct SuiteArgs {
     /// Worker threads per run (default: all cores).
     #[arg(long, value_name = "N")]
     threads: Option<usize>,
+    /// Set a scene key in every run, e.g. `--set discretisation.kernel=quintic_spline`
+    /// (repeatable; use with --out: the results are not the cases as written).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<SceneOverride>,
+    /// Simulate only the runs with these ids (e.g. `--only eps_10`); the case is measured from
+    /// the runs that exist.
+    #[arg(long, value_delimiter = ',')]
+    only: Vec<String>,
 }
 
 impl SuiteArgs {
@@ -65,6 +75,8 @@ impl SuiteArgs {
             force: self.force,
             threads: self.threads,
             progress: true,
+            overrides: self.set.clone(),
+            only: self.only.clone(),
         }
     }
 }
@@ -193,6 +205,31 @@ enum Command {
         #[arg(long, value_delimiter = ',', default_value = "1")]
         order: Vec<u8>,
     },
+    /// The surface tension of each liquid of a scene as the relaxed particle liquid has it:
+    /// a periodic slab relaxed under the scene's forces, σ from the pair-force virial
+    /// (Kirkwood–Buff), for kernels × h/l0 × r_e/l0 × orders (default: the scene's own).
+    SlabTension {
+        /// The scene (its liquids, sound speed, density control and viscosities are used).
+        scene: PathBuf,
+        /// Kernels.
+        #[arg(long, value_enum, value_delimiter = ',')]
+        kernel: Vec<KernelArg>,
+        /// Smoothing lengths h/l0.
+        #[arg(long = "h", value_delimiter = ',')]
+        h_over_l0: Vec<f64>,
+        /// Potential cut-offs r_e/l0.
+        #[arg(long = "re", value_delimiter = ',')]
+        re_over_l0: Vec<f64>,
+        /// Orders m of the potential's zero at r_e.
+        #[arg(long, value_delimiter = ',')]
+        order: Vec<u8>,
+        /// The slab's thickness over l0 (a convergence check of the measurement).
+        #[arg(long, default_value_t = SlabDesign::default().thickness_over_l0)]
+        thickness_over_l0: f64,
+        /// Run length in sound crossings of the slab (the last quarter is averaged).
+        #[arg(long, default_value_t = SlabDesign::default().crossings)]
+        crossings: f64,
+    },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
         /// Output folder of a previous suite run.
@@ -268,6 +305,25 @@ fn main() {
                 lattice_moduli::table(&kernels, &h_over_l0, &re_over_l0, &order)
             );
             0
+        }
+        Command::SlabTension {
+            scene,
+            kernel,
+            h_over_l0,
+            re_over_l0,
+            order,
+            thickness_over_l0,
+            crossings,
+        } => {
+            let design = SlabDesign {
+                thickness_over_l0,
+                crossings,
+                averaged_crossings: crossings / 4.0,
+                ..SlabDesign::default()
+            };
+            exit_of(slab_tension_table(
+                &scene, design, kernel, h_over_l0, re_over_l0, order,
+            ))
         }
         Command::Study {
             which:
@@ -363,6 +419,47 @@ fn report(out: &Path) -> anyhow::Result<i32> {
     }
     summary::write_all(out, record.fidelity, &cases, None)?;
     eprintln!("summary: {}", out.join("summary.md").display());
+    Ok(0)
+}
+
+/// `verify slab-tension`: the settings are the scene's own unless given.
+fn slab_tension_table(
+    scene: &Path,
+    design: SlabDesign,
+    kernel: Vec<KernelArg>,
+    h_over_l0: Vec<f64>,
+    re_over_l0: Vec<f64>,
+    order: Vec<u8>,
+) -> anyhow::Result<i32> {
+    let sc = load_scene(scene)?;
+    let d = &sc.discretisation;
+    let or = |v: &[f64], x: f64| if v.is_empty() { vec![x] } else { v.to_vec() };
+    let kernels: Vec<KernelKind> = if kernel.is_empty() {
+        vec![d.kernel]
+    } else {
+        kernel.into_iter().map(KernelKind::from).collect()
+    };
+    let orders = if order.is_empty() {
+        vec![d.potential_order]
+    } else {
+        order
+    };
+    let mut settings = Vec::new();
+    for &kernel in &kernels {
+        for &h in &or(&h_over_l0, d.h_over_l0) {
+            for &re in &or(&re_over_l0, d.re_over_l0) {
+                for &order in &orders {
+                    settings.push(slab_tension::Setting {
+                        kernel,
+                        h_over_l0: h,
+                        re_over_l0: re,
+                        order,
+                    });
+                }
+            }
+        }
+    }
+    print!("{}", slab_tension::table(&sc, &settings, design)?);
     Ok(0)
 }
 

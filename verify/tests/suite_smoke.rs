@@ -27,6 +27,8 @@ fn run(name: &str) -> (Vec<Metric>, PathBuf) {
         force: false,
         threads: Some(2),
         progress: false,
+        overrides: vec![],
+        only: vec![],
     };
     let metrics = runner::run_case(case(name).as_ref(), &opts).expect("case runs");
     (metrics, out)
@@ -118,6 +120,8 @@ fn cube_drop_smoke() {
         force: false,
         threads: Some(2),
         progress: false,
+        overrides: vec![],
+        only: vec![],
     };
     runner::run_case(case("cube_drop").as_ref(), &opts).unwrap();
     let stamp2 = std::fs::metadata(out.join("cube_drop/c2_150/run_info.json"))

@@ -53,6 +53,9 @@ pub struct Model {
     pub mu_pair: Vec<f64>,
     /// Fowkes pair table (zero coefficients without interfacial tension).
     pub pairs: PairTable,
+    /// The factor on each liquid's coefficients from a relaxed-slab calibration
+    /// ([`Model::scale_tension`]; 1 with the lattice calibration).
+    pub tension_scales: Vec<f64>,
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
     pub lattice_kernel_sum: f64,
     /// Rest volume of a particle `m/ρ0` [m³].
@@ -182,6 +185,7 @@ impl Model {
             mass,
             mu_pair,
             pairs,
+            tension_scales: vec![1.0; n_liquids],
             lattice_kernel_sum,
             rest_volume_m3,
             surface_sum_m3,
@@ -196,6 +200,20 @@ impl Model {
             wall_repulsion_strength_j,
             wall_repulsion_range_m: repulsion::RANGE_OVER_L0 * l0,
         })
+    }
+
+    /// Scales each liquid's potential coefficients by its factor in `scales` (one per liquid;
+    /// [`PairTable::scale_liquids`]) and the liquid–wall repulsion with them (it is
+    /// proportional to the liquid's cohesive pressure, hence to `C_aa`).
+    pub fn scale_tension(&mut self, scales: &[f64]) {
+        assert_eq!(scales.len(), self.n_liquids, "one factor per liquid");
+        self.pairs.scale_liquids(scales);
+        for (t, f) in self.tension_scales.iter_mut().zip(scales) {
+            *t *= f;
+        }
+        for (d, f) in self.wall_repulsion_strength_j.iter_mut().zip(scales) {
+            *d *= f;
+        }
     }
 
     /// Gravity vector [m/s²] (zero without the effect).

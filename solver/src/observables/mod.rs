@@ -11,8 +11,10 @@
 //! [`energy`]).
 
 mod energy;
+mod stress;
 
 pub use energy::{compression_energy, gravity_energy, interfacial_energy, wall_repulsion_energy};
+pub use stress::particle_virials;
 
 use crate::model::Model;
 use crate::neighbours::NeighbourLists;

@@ -178,6 +178,13 @@ pub struct Discretisation {
     /// cut-off, which makes the particle lattice's shear moduli small for any `r_e`.
     #[serde(default = "default_potential_order", skip_serializing_if = "is_kondo")]
     pub potential_order: u8,
+    /// How the potential's coefficients are calibrated: `lattice` (default) fixes
+    /// `C = 2σ l0²/S` on the rigid reference lattice; `relaxed_slab` then scales each liquid's
+    /// coefficients so that a relaxed periodic slab of it has the typed σ, measured from the
+    /// pair-force virial (Kirkwood–Buff; [`crate::simulation::calibration`]). Computed when
+    /// the run starts (a slab of a few thousand particles per liquid), never typed in.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub tension_calibration: TensionCalibration,
     /// Artificial speed of sound `c` [m/s], the same for all phases (Tait EOS, Eq. 14).
     pub sound_speed: f64,
     /// Which mass a particle carries. Default `physical` (`ρ0 l0³`); `lattice` is physics.md
@@ -192,6 +199,18 @@ pub struct Discretisation {
     /// before anything is allocated. Default 20 000 000 (about 20 GB at r_e = 4.2 l0).
     #[serde(default = "default_max_particles")]
     pub max_particles: u64,
+}
+
+/// How the potential's coefficients are calibrated (`discretisation.tension_calibration`).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum TensionCalibration {
+    /// `C = 2σ l0²/S` from the rigid reference lattice (Natsui 2021's normalisation).
+    #[default]
+    Lattice,
+    /// The lattice's `C` scaled per liquid by `σ/σ_KB`, `σ_KB` the tension of a relaxed
+    /// periodic slab of that liquid with the lattice's `C`.
+    RelaxedSlab,
 }
 
 /// A paper's discretisation: the defaults it gives `h/l0` and `r_e/l0`.

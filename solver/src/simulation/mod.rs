@@ -16,6 +16,7 @@
 //!
 //! The step reads only the resolved [`Model`]; the scene is kept for checkpoints and records.
 
+pub mod calibration;
 mod evaluate;
 mod force_terms;
 mod limits;
@@ -28,7 +29,7 @@ use crate::model::Model;
 use crate::neighbours::NeighbourSearch;
 use crate::observables::{observe, Observables};
 use crate::physics::forces::Dissipation;
-use crate::scene::Scene;
+use crate::scene::{Scene, TensionCalibration};
 use crate::setup::{build_particles, Inventory};
 use crate::state::Particles;
 use crate::with_kernel;
@@ -101,7 +102,15 @@ impl Simulation {
     /// [`Simulation::new`] and [`Simulation::resume`](crate::checkpoint).
     pub(crate) fn assemble(scene: &Scene) -> Result<Simulation, SimError> {
         scene.validate()?;
-        let model = Model::from_scene(scene)?;
+        let mut model = Model::from_scene(scene)?;
+        if scene.discretisation.tension_calibration == TensionCalibration::RelaxedSlab
+            && model.effects.interfacial_tension
+        {
+            model.scale_tension(&calibration::liquid_scales(
+                scene,
+                calibration::SlabDesign::default(),
+            )?);
+        }
         let (particles, wall_no_slip, inventory) = build_particles(scene, &model)?;
         let mut search = NeighbourSearch::new(
             model.support_m,

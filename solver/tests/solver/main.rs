@@ -14,4 +14,5 @@ mod fuzz_scenes;
 mod lattice_energy;
 mod periodic;
 mod scene_errors;
+mod tension_calibration;
 mod walls;

@@ -2,3 +2,4 @@
 //! particle system is from a liquid.
 
 pub mod lattice_moduli;
+pub mod slab_tension;

@@ -39,6 +39,10 @@ pub struct RunInfo {
     pub fluid_particles: usize,
     /// Wall particles.
     pub wall_particles: usize,
+    /// The relaxed-slab calibration's factor on each liquid's potential coefficients
+    /// (`tension_calibration = "relaxed_slab"`; absent with the lattice calibration).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tension_scales: Vec<f64>,
     /// Particles per body `(name, count)`.
     pub bodies: Vec<(String, usize)>,
     /// Particles and layers per wall `(name, count, layers)`.
@@ -80,6 +84,11 @@ impl RunInfo {
             threads,
             fluid_particles: sim.particles.n_fluid,
             wall_particles: sim.particles.n_wall(),
+            tension_scales: if sim.model.tension_scales.iter().all(|&f| f == 1.0) {
+                Vec::new()
+            } else {
+                sim.model.tension_scales.clone()
+            },
             bodies: sim.inventory.bodies.clone(),
             walls: sim.inventory.walls.clone(),
             steps: 0,

@@ -4,6 +4,7 @@
 use super::stepping::Run;
 use crate::output::run_info::{RunInfo, Status};
 use crate::output::{checkpoint, RunError};
+use solver::scene::TensionCalibration;
 use solver::{Scene, SimError, Simulation};
 use std::path::Path;
 
@@ -63,6 +64,12 @@ impl<'a> Run<'a> {
         out: &'a Path,
         threads: usize,
     ) -> Result<Run<'a>, RunError> {
+        if scene.discretisation.tension_calibration == TensionCalibration::RelaxedSlab {
+            eprintln!(
+                "{}: calibrating the tension on relaxed slabs (a few minutes, once per process)",
+                scene_file.display()
+            );
+        }
         let sim = Simulation::new(scene).map_err(|e| match e {
             SimError::Scene(e) => RunError::Scene(format!("{}: {e}", scene_file.display())),
             e => RunError::Simulation(e.to_string()),

@@ -8,6 +8,7 @@
 pub mod compare;
 pub mod dump;
 pub mod metric;
+pub mod overrides;
 pub mod runner;
 
 pub use metric::{Metric, Tolerance};

@@ -26,6 +26,11 @@ pub struct SuiteOptions {
     pub threads: Option<usize>,
     /// Progress bars.
     pub progress: bool,
+    /// Scene keys set in every run (`--set`); empty for the cases as written.
+    pub overrides: Vec<super::overrides::SceneOverride>,
+    /// Simulate only the runs with these ids (`--only`); empty for all. The case is measured
+    /// from the runs that exist.
+    pub only: Vec<String>,
 }
 
 /// What `verify report` needs to know about the last suite run in a folder.
@@ -40,7 +45,14 @@ pub struct SuiteRecord {
 pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metric>> {
     let dir = opts.out.join(case.name());
     std::fs::create_dir_all(&dir)?;
-    let specs = case.runs(opts.fidelity);
+    let mut specs = case.runs(opts.fidelity);
+    if !opts.only.is_empty() {
+        specs.retain(|s| opts.only.contains(&s.id));
+    }
+    for spec in &mut specs {
+        spec.scene = super::overrides::apply(&spec.scene, &opts.overrides)
+            .with_context(|| format!("{}/{}", case.name(), spec.id))?;
+    }
     for spec in &specs {
         if let Some(declared) = case.effects() {
             anyhow::ensure!(

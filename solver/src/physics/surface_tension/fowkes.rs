@@ -58,6 +58,25 @@ impl PairTable {
         }
     }
 
+    /// Scales the coefficients by liquid: `C_aa` by `f_a`, two liquids' `C_ab` by `√(f_a f_b)`,
+    /// a liquid's against a solid by its `f`; `scales` has one factor per liquid (the first
+    /// `scales.len()` phases). The pair strengths `σ_pair` stay the typed ones.
+    pub fn scale_liquids(&mut self, scales: &[f64]) {
+        let nl = scales.len();
+        let f = |a: usize| if a < nl { Some(scales[a]) } else { None };
+        for a in 0..self.n_phases {
+            for b in 0..self.n_phases {
+                let s = match (f(a), f(b)) {
+                    (Some(fa), Some(fb)) if a == b => fa.min(fb),
+                    (Some(fa), Some(fb)) => (fa * fb).sqrt(),
+                    (Some(fl), None) | (None, Some(fl)) => fl,
+                    (None, None) => 1.0,
+                };
+                self.coeff[a * self.n_phases + b] *= s;
+            }
+        }
+    }
+
     /// `C_ab` [N/m²].
     #[inline(always)]
     pub fn c(&self, a: usize, b: usize) -> f64 {

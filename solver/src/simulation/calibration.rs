@@ -263,7 +263,8 @@ pub const CALIBRATION_TOLERANCE: f64 = 0.005;
 const MAX_SLABS: usize = 5;
 
 /// The factor `f` of liquid `a`'s coefficients whose relaxed slab has the typed tension
-/// `sigma` [N/m] within [`CALIBRATION_TOLERANCE`]. The response is not linear in `C` (the
+/// `sigma` [N/m] within [`CALIBRATION_TOLERANCE`] (or within twice the slab's standard error,
+/// when the slab is noisier than that). The response is not linear in `C` (the
 /// bulk's compression, and the surface sums with it, follow `C`): from `f0 = 1` and
 /// `f1 = σ/σ_KB(1)` on, each step fits `σ_KB ∝ f^α` through the last two slabs and sets
 /// `f ← f (σ/σ_KB(f))^(1/α)` (a secant step in the logarithms). Refused, with the residual, if
@@ -274,16 +275,22 @@ pub fn calibrate_liquid(
     design: SlabDesign,
     sigma: f64,
 ) -> Result<f64, SimError> {
-    let (mut f_prev, mut s_prev) = (1.0, positive_slab_tension(scene, a, design, 1.0)?);
-    let mut f = sigma / s_prev;
-    if (s_prev / sigma - 1.0).abs() < CALIBRATION_TOLERANCE {
+    // close enough: within the tolerance, or within twice the slab's own standard error (a
+    // noisier slab cannot tell a closer factor apart)
+    let close =
+        |(s, se): (f64, f64)| (s - sigma).abs() < (CALIBRATION_TOLERANCE * sigma).max(2.0 * se);
+    let first = positive_slab_tension(scene, a, design, 1.0)?;
+    if close(first) {
         return Ok(1.0);
     }
+    let (mut f_prev, mut s_prev) = (1.0, first.0);
+    let mut f = sigma / s_prev;
     for _ in 1..MAX_SLABS {
-        let s = positive_slab_tension(scene, a, design, f)?;
-        if (s / sigma - 1.0).abs() < CALIBRATION_TOLERANCE {
+        let m = positive_slab_tension(scene, a, design, f)?;
+        if close(m) {
             return Ok(f);
         }
+        let s = m.0;
         let alpha = if (f / f_prev - 1.0).abs() > 1e-6 {
             ((s / s_prev).ln() / (f / f_prev).ln()).clamp(0.2, 5.0)
         } else {
@@ -306,14 +313,14 @@ pub fn calibrate_liquid(
     .into())
 }
 
-/// The relaxed slab's tension [N/m] of liquid `a` at coefficients × `scale`; refused if not
-/// positive (nothing to calibrate).
+/// The relaxed slab's tension and its standard error [N/m] of liquid `a` at coefficients ×
+/// `scale`; refused if not positive (nothing to calibrate).
 fn positive_slab_tension(
     scene: &Scene,
     a: usize,
     design: SlabDesign,
     scale: f64,
-) -> Result<f64, SimError> {
+) -> Result<(f64, f64), SimError> {
     let m = slab_tension(scene, a, design, scale)?;
     if m.sigma_measured_n_m.is_nan() || m.sigma_measured_n_m <= 0.0 {
         return Err(SceneError::invalid(
@@ -327,5 +334,5 @@ fn positive_slab_tension(
         )
         .into());
     }
-    Ok(m.sigma_measured_n_m)
+    Ok((m.sigma_measured_n_m, m.sigma_standard_error_n_m))
 }

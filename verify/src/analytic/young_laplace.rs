@@ -157,6 +157,30 @@ pub fn capillary_length(
     (surface_tension_n_per_m / (density_kg_m3 * gravity_m_s2)).sqrt()
 }
 
+/// The contact angle [deg] of the spherical cap of volume `volume_m3` [m³] whose height is
+/// `height_m` [m] (the inverse of [`spherical_cap`]'s height, which rises monotonically with the
+/// angle): bisection over (0°, 180°) to 1e-10°. `None` if no cap of that volume has that height.
+pub fn spherical_cap_angle_from_height(volume_m3: f64, height_m: f64) -> Option<f64> {
+    let positive = |x: f64| x.is_finite() && x > 0.0;
+    if !positive(volume_m3) || !positive(height_m) {
+        return None;
+    }
+    let h = |deg: f64| spherical_cap(volume_m3, deg).height_m;
+    let (mut lo, mut hi) = (1e-6, 180.0 - 1e-6);
+    if height_m < h(lo) || height_m > h(hi) {
+        return None;
+    }
+    while hi - lo > 1e-10 {
+        let mid = 0.5 * (lo + hi);
+        if h(mid) < height_m {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
+}
+
 /// Spherical cap of volume `volume_m3` \[m³\] and contact angle `contact_angle_deg` \[deg\]: the
 /// exact sessile shape without gravity (closed form).
 ///
@@ -708,6 +732,19 @@ mod tests {
 
     /// Without gravity the Young–Laplace integration must reproduce the closed-form spherical cap
     /// (height, contact radius, apex radius) for acute, right and obtuse angles up to 179.5°.
+    #[test]
+    fn the_cap_angle_from_its_height_inverts_the_cap() {
+        for theta in [15.0, 30.0, 60.0, 90.0, 135.0, 170.0] {
+            let v = 2.1e-9;
+            let h = spherical_cap(v, theta).height_m;
+            let back = spherical_cap_angle_from_height(v, h).expect("a cap");
+            // bisection to 1e-10°, and the height's own rounding: 1e-8°
+            assert!((back - theta).abs() < 1e-8, "{theta} → {back}");
+        }
+        assert!(spherical_cap_angle_from_height(2.1e-9, 1.0).is_none());
+        assert!(spherical_cap_angle_from_height(-1.0, 1e-3).is_none());
+    }
+
     #[test]
     fn zero_gravity_equals_spherical_cap() {
         for &theta_deg in &[1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 175.0, 179.5] {

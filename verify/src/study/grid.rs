@@ -1,7 +1,7 @@
 //! The study's points: problems, variants, resolutions, and their scenes.
 
 use crate::analytic::{lamb, young_laplace};
-use crate::cases::scene::{SceneBuilder, MATTE};
+use crate::cases::scene::{artificial_viscosity_m2_s, SceneBuilder, MATTE};
 use serde::{Deserialize, Serialize};
 use solver::kernel::KernelKind;
 use solver::scene::{BodyShape, Reinit, WallBoundary, WallShape};
@@ -16,53 +16,86 @@ pub enum Problem {
     /// Matte drop (2 mm diameter) on a θ = 90° plate under gravity: relative error of the
     /// equilibrium height against the axisymmetric Young–Laplace solution.
     SessileDrop,
+    /// The cube drop's run again: relative error of the l = 4 amplitude decay rate against
+    /// Lamb's with the liquid's ν plus the artificial viscosity's α1 h c/10.
+    CubeDamping,
+    /// A matte hemisphere on a plate where its contact angle is 30°, zero gravity: relative
+    /// error of the static angle (from the height of the spherical cap of the drop's volume).
+    ContactAngle30,
+    /// The same at 60°.
+    ContactAngle60,
 }
 
 impl Problem {
-    /// Name used in folders and tables.
+    /// Every problem, in report order.
+    pub const ALL: [Problem; 5] = [
+        Problem::CubeDrop,
+        Problem::CubeDamping,
+        Problem::SessileDrop,
+        Problem::ContactAngle30,
+        Problem::ContactAngle60,
+    ];
+
+    /// Name used in tables.
     pub fn name(self) -> &'static str {
         match self {
             Problem::CubeDrop => "cube_drop",
             Problem::SessileDrop => "sessile_drop",
+            Problem::CubeDamping => "cube_damping",
+            Problem::ContactAngle30 => "contact_angle_30",
+            Problem::ContactAngle60 => "contact_angle_60",
         }
     }
 
-    /// The analytic reference value: period [s] or height [m].
-    pub fn reference(self) -> f64 {
+    /// The folder of its runs: the cube's damping is measured on the cube drop's runs.
+    pub fn run_name(self) -> &'static str {
         match self {
-            Problem::CubeDrop => lamb::lamb_period(
-                4,
-                MATTE.surface_tension_n_m,
-                MATTE.density_kg_m3,
-                lamb::cube_equivalent_radius(CUBE_SIDE_M),
-            ),
-            Problem::SessileDrop => young_laplace::sessile_drop(
-                drop_volume(),
-                MATTE.density_kg_m3,
-                MATTE.surface_tension_n_m,
-                90.0,
-                G,
-            )
-            .map(|d| d.height_m)
-            .unwrap_or(f64::NAN),
+            Problem::CubeDamping => Problem::CubeDrop.name(),
+            p => p.name(),
+        }
+    }
+
+    /// The quantity measured, with its unit.
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Problem::CubeDrop => "l = 4 period [s] against Lamb",
+            Problem::SessileDrop => "equilibrium height [m] against Young–Laplace",
+            Problem::CubeDamping => {
+                "l = 4 amplitude decay rate [1/s] against Lamb with ν + α1 h c/10 (the reference \
+                 depends on h)"
+            }
+            Problem::ContactAngle30 | Problem::ContactAngle60 => {
+                "static contact angle [°] (spherical cap of the drop's volume and height) against \
+                 the typed one"
+            }
+        }
+    }
+
+    /// The contact angle of the plate [°], for the problems with a plate.
+    fn plate_angle_deg(self) -> Option<f64> {
+        match self {
+            Problem::SessileDrop => Some(90.0),
+            Problem::ContactAngle30 => Some(30.0),
+            Problem::ContactAngle60 => Some(60.0),
+            Problem::CubeDrop | Problem::CubeDamping => None,
         }
     }
 
     /// Resolutions: particles along the cube side, or drop radius over `l0`.
     pub fn resolutions(self, grid: Grid) -> Vec<usize> {
-        match (self, grid) {
-            (Problem::CubeDrop, Grid::Reduced) => vec![8, 10],
-            (Problem::CubeDrop, _) => vec![10, 14, 20, 28],
-            (Problem::SessileDrop, Grid::Reduced) => vec![4, 5],
-            (Problem::SessileDrop, _) => vec![5, 7, 10, 14],
+        match (self.plate_angle_deg().is_some(), grid) {
+            (false, Grid::Reduced) => vec![8, 10],
+            (false, _) => vec![10, 14, 20, 28],
+            (true, Grid::Reduced) => vec![4, 5],
+            (true, _) => vec![5, 7, 10, 14],
         }
     }
 
     /// `l0` [m] at a resolution.
     pub fn l0(self, resolution: usize) -> f64 {
-        match self {
-            Problem::CubeDrop => CUBE_SIDE_M / resolution as f64,
-            Problem::SessileDrop => DROP_RADIUS_M / resolution as f64,
+        match self.plate_angle_deg() {
+            None => CUBE_SIDE_M / resolution as f64,
+            Some(_) => DROP_RADIUS_M / resolution as f64,
         }
     }
 }
@@ -78,6 +111,13 @@ pub struct Variant {
     pub re_over_l0: f64,
     /// Continuity density with Shepard re-initialisation every 20 steps instead of summation.
     pub continuity: bool,
+    /// Order of the potential's zero at `r_e` (1: Kondo 2007).
+    #[serde(default = "kondo")]
+    pub potential_order: u8,
+}
+
+fn kondo() -> u8 {
+    1
 }
 
 impl Variant {
@@ -87,12 +127,19 @@ impl Variant {
         h_over_l0: 1.05,
         re_over_l0: 4.2,
         continuity: false,
+        potential_order: 1,
     };
 
-    /// A short label, e.g. `wendland_c2 h1.05 re4.2 sum`.
+    /// A short label, e.g. `wendland_c2 h1.05 re4.2 sum` (` m2` appended for a potential of
+    /// order 2).
     pub fn label(&self) -> String {
+        let order = if self.potential_order == 1 {
+            String::new()
+        } else {
+            format!(" m{}", self.potential_order)
+        };
         format!(
-            "{} h{} re{} {}",
+            "{} h{} re{} {}{order}",
             self.kernel.name(),
             self.h_over_l0,
             self.re_over_l0,
@@ -113,7 +160,9 @@ pub enum Grid {
     /// Two variants × two coarse resolutions per problem: the test suite's.
     Reduced,
     /// The default and each single change from it (3 other kernels, h/l0 = 1.3, r_e = 2.1 and
-    /// 3.1 l0, continuity density) × four resolutions: 8 variants × 4 × 2 problems.
+    /// 3.1 l0, continuity density), and the two settings whose lattice has both shear moduli
+    /// near zero (quintic spline at h = 1.05 l0 with a smooth potential: r_e = 4.4 l0 of order
+    /// 2, r_e = 5.0 l0 of order 3) × four resolutions: 10 variants × 4 × 5 problems.
     Standard,
     /// The full factorial: 4 kernels × h/l0 ∈ {1.05, 1.3} × r_e ∈ {2.1, 3.1, 4.2} × 2 density
     /// schemes × four resolutions × 2 problems (hours).
@@ -153,6 +202,14 @@ impl Grid {
                     continuity: true,
                     ..d
                 });
+                for (re_over_l0, potential_order) in [(4.4, 2), (5.0, 3)] {
+                    v.push(Variant {
+                        kernel: KernelKind::QuinticSpline,
+                        re_over_l0,
+                        potential_order,
+                        ..d
+                    });
+                }
                 v
             }
             Grid::Full => {
@@ -166,6 +223,7 @@ impl Grid {
                                     h_over_l0,
                                     re_over_l0,
                                     continuity,
+                                    potential_order: 1,
                                 });
                             }
                         }
@@ -176,10 +234,10 @@ impl Grid {
         }
     }
 
-    /// Every point of the grid, both problems.
+    /// Every point of the grid, every problem.
     pub fn points(self) -> Vec<Point> {
         let mut out = Vec::new();
-        for problem in [Problem::CubeDrop, Problem::SessileDrop] {
+        for problem in Problem::ALL {
             for variant in self.variants() {
                 for resolution in problem.resolutions(self) {
                     out.push(Point {
@@ -217,14 +275,43 @@ fn drop_volume() -> f64 {
 }
 
 impl Point {
-    /// Folder name.
+    /// Folder name (the cube's damping shares the cube drop's runs).
     pub fn id(&self) -> String {
         format!(
             "{}/{}/n{}",
-            self.problem.name(),
+            self.problem.run_name(),
             self.variant.id(),
             self.resolution
         )
+    }
+
+    /// The analytic reference value: period [s], decay rate [1/s], height [m] or angle [°].
+    pub fn reference(&self) -> f64 {
+        match self.problem {
+            Problem::CubeDrop => lamb::lamb_period(
+                4,
+                MATTE.surface_tension_n_m,
+                MATTE.density_kg_m3,
+                lamb::cube_equivalent_radius(CUBE_SIDE_M),
+            ),
+            Problem::CubeDamping => lamb::lamb_damping_rate(
+                4,
+                MATTE.viscosity_pa_s / MATTE.density_kg_m3
+                    + artificial_viscosity_m2_s(&self.scene()),
+                lamb::cube_equivalent_radius(CUBE_SIDE_M),
+            ),
+            Problem::SessileDrop => young_laplace::sessile_drop(
+                drop_volume(),
+                MATTE.density_kg_m3,
+                MATTE.surface_tension_n_m,
+                90.0,
+                G,
+            )
+            .map(|d| d.height_m)
+            .unwrap_or(f64::NAN),
+            Problem::ContactAngle30 => 30.0,
+            Problem::ContactAngle60 => 60.0,
+        }
     }
 
     /// `l0` [m].
@@ -233,12 +320,12 @@ impl Point {
     }
 
     /// Fluid particles, estimated from the shape's volume over l0³: n³ for the cube, the
-    /// hemisphere's (2/3)π n³ for the sessile drop of radius n l0.
+    /// hemisphere's (2/3)π n³ for the drops of radius n l0 on a plate.
     pub fn estimated_particles(&self) -> usize {
         let n = self.resolution as f64;
-        match self.problem {
-            Problem::CubeDrop => (n * n * n) as usize,
-            Problem::SessileDrop => (2.0 / 3.0 * std::f64::consts::PI * n * n * n) as usize,
+        match self.problem.plate_angle_deg() {
+            None => (n * n * n) as usize,
+            Some(_) => (2.0 / 3.0 * std::f64::consts::PI * n * n * n) as usize,
         }
     }
 
@@ -248,6 +335,7 @@ impl Point {
         // c² = 150 m²/s² as the paper's cube drop
         let b = SceneBuilder::new(self.l0(), 150f64.sqrt())
             .kernel(v.kernel, v.h_over_l0, v.re_over_l0)
+            .potential_order(v.potential_order)
             .paper_effects()
             .liquid(&MATTE);
         let b = if v.continuity {
@@ -255,8 +343,8 @@ impl Point {
         } else {
             b
         };
-        let b = match self.problem {
-            Problem::CubeDrop => {
+        let b = match (self.problem, self.problem.plate_angle_deg()) {
+            (_, None) => {
                 let h = 0.5 * CUBE_SIDE_M;
                 // 3.5 ms ≈ 3 periods
                 b.time(3.5e-3, 1.0e-5).body(
@@ -269,29 +357,34 @@ impl Point {
                 )
             }
             // 20 ms ≈ 6 capillary times √(ρR³/σ); the drop starts as the hemisphere it would be
-            // without gravity
-            Problem::SessileDrop => b
-                .time(0.02, 2.0e-4)
-                .gravity([0.0, 0.0, -G])
-                .solid("plate", &[(MATTE.name, 90.0)])
-                .body(
-                    "drop",
-                    MATTE.name,
-                    BodyShape::Hemisphere {
-                        center: [0.0; 3],
-                        radius: DROP_RADIUS_M,
-                        pole: [0.0, 0.0, 1.0],
-                    },
-                )
-                .wall(
-                    "plate",
-                    "plate",
-                    WallShape::Disk {
-                        center: [0.0; 3],
-                        radius: 2.0 * DROP_RADIUS_M,
-                    },
-                    WallBoundary::FreeSlip,
-                ),
+            // without gravity (and the angle problems spread from it, without gravity)
+            (problem, Some(theta)) => {
+                let b = if problem == Problem::SessileDrop {
+                    b.gravity([0.0, 0.0, -G])
+                } else {
+                    b
+                };
+                b.time(0.02, 2.0e-4)
+                    .solid("plate", &[(MATTE.name, theta)])
+                    .body(
+                        "drop",
+                        MATTE.name,
+                        BodyShape::Hemisphere {
+                            center: [0.0; 3],
+                            radius: DROP_RADIUS_M,
+                            pole: [0.0, 0.0, 1.0],
+                        },
+                    )
+                    .wall(
+                        "plate",
+                        "plate",
+                        WallShape::Disk {
+                            center: [0.0; 3],
+                            radius: 2.0 * DROP_RADIUS_M,
+                        },
+                        WallBoundary::FreeSlip,
+                    )
+            }
         };
         b.build()
     }
@@ -307,11 +400,28 @@ mod tests {
             let s = p.scene();
             assert_eq!(s.discretisation.kernel, p.variant.kernel);
         }
-        assert!(Problem::CubeDrop.reference() > 1e-3 && Problem::CubeDrop.reference() < 1.3e-3);
+        let reference = |problem| {
+            Point {
+                problem,
+                variant: Variant::DEFAULT,
+                resolution: 10,
+            }
+            .reference()
+        };
+        assert!(reference(Problem::CubeDrop) > 1e-3 && reference(Problem::CubeDrop) < 1.3e-3);
         assert!(
-            Problem::SessileDrop.reference() > 0.8e-3 && Problem::SessileDrop.reference() < 1.0e-3
+            reference(Problem::SessileDrop) > 0.8e-3 && reference(Problem::SessileDrop) < 1.0e-3
         );
-        assert_eq!(Grid::Standard.variants().len(), 8);
+        assert_eq!(Grid::Standard.variants().len(), 10);
+        // the cube's damping is measured on the cube drop's runs: same folder, same scene
+        let cube = Grid::Standard.points()[0];
+        let damping = Point {
+            problem: Problem::CubeDamping,
+            ..cube
+        };
+        assert_eq!((cube.id(), cube.scene()), (damping.id(), damping.scene()));
+        // Lamb's l = 4 rate with ν + ν_AV: larger than with ν alone
+        assert!(damping.reference() > lamb::lamb_damping_rate(4, 3.13e-3 / 4500.0, 6.2e-4));
         assert_eq!(Grid::Full.variants().len(), 48);
     }
 }

@@ -1,6 +1,7 @@
 //! Running and measuring the study's points.
 
 use super::grid::{Point, Problem};
+use crate::analytic::young_laplace;
 use crate::measure::oscillation;
 use crate::output::run_info::{RunInfo, Status};
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
@@ -72,35 +73,48 @@ pub fn run_point(
     measure(point, &dir)
 }
 
+/// The settled height of a drop on the plate [m]: its highest particle centre + l0/2 (the wall
+/// surface at z = 0), mean over the last quarter of the run; `None` without output.
+fn settled_top(ts: &Table, l0: f64) -> Option<f64> {
+    let top = ts.liquid_column("matte", LiquidColumn::Max(Axis::Z));
+    let tail = &top[top.len() * 3 / 4..];
+    (!tail.is_empty()).then(|| tail.iter().sum::<f64>() / tail.len() as f64 + 0.5 * l0)
+}
+
 /// Measures a finished point from its folder.
 pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
     let info = RunInfo::read(dir)?;
     let ts = Table::read(&dir.join("timeseries.csv"))?;
-    let reference = point.problem.reference();
+    let reference = point.reference();
     let l0 = point.l0();
     let t = ts.run_column(RunColumn::Time);
     let (value, why) = match point.problem {
-        Problem::CubeDrop => {
+        Problem::CubeDrop | Problem::CubeDamping => {
             let q4 = ts.liquid_column("matte", LiquidColumn::Q4);
             // skip the corners' collapse (0.2 ms), as the cube_drop case does
             let from = t.iter().position(|&x| x >= 2e-4).unwrap_or(0);
             match oscillation::fit_damped_cosine(&t[from..], &q4[from..]) {
-                Ok(f) => (f.period_s, None),
+                Ok(f) if point.problem == Problem::CubeDrop => (f.period_s, None),
+                Ok(f) => (f.damping_rate_per_s, None),
                 Err(e) => (f64::NAN, Some(e)),
             }
         }
-        Problem::SessileDrop => {
-            // top of the drop: highest particle centre + l0/2, the wall surface at z = 0;
-            // mean over the last quarter of the run
-            let top = ts.liquid_column("matte", LiquidColumn::Max(Axis::Z));
-            let tail = &top[top.len() * 3 / 4..];
-            if tail.is_empty() {
-                (f64::NAN, Some("no output".to_string()))
-            } else {
-                (
-                    tail.iter().sum::<f64>() / tail.len() as f64 + 0.5 * l0,
-                    None,
-                )
+        Problem::SessileDrop => match settled_top(&ts, l0) {
+            Some(top) => (top, None),
+            None => (f64::NAN, Some("no output".to_string())),
+        },
+        Problem::ContactAngle30 | Problem::ContactAngle60 => {
+            // the drop's volume: its particles' rest volume l0³ (physical mass); the angle of
+            // the spherical cap of that volume and the settled height
+            let volume = info.fluid_particles as f64 * l0 * l0 * l0;
+            match settled_top(&ts, l0)
+                .and_then(|top| young_laplace::spherical_cap_angle_from_height(volume, top))
+            {
+                Some(theta) => (theta, None),
+                None => (
+                    f64::NAN,
+                    Some("no spherical cap of that height".to_string()),
+                ),
             }
         }
     };

@@ -17,12 +17,14 @@ pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyho
     let _ = writeln!(
         md,
         "Each point is one run in its own process (wall time and peak memory are its own). Error = \
-         (value − reference)/reference: the cube drop's l = 4 period (damped-cosine fit of the shape \
-         moment Q4) against Lamb, the sessile matte drop's equilibrium height against the \
-         Young–Laplace solution. Data: `points.csv`. Variants are labelled `kernel h/l0 r_e/l0 \
-         density`.\n"
+         (value − reference)/reference: the cube drop's l = 4 period and amplitude decay rate \
+         (damped-cosine fit of the shape moment Q4) against Lamb's (the rate with ν + α1 h c/10), \
+         the sessile matte drop's equilibrium height against the Young–Laplace solution, and the \
+         static angle of zero-gravity drops on 30° and 60° plates (the spherical cap of their \
+         volume and height). Data: `points.csv`. Variants are labelled `kernel h/l0 r_e/l0 \
+         density` (and `mM` for a potential of order M).\n"
     );
-    for problem in [Problem::CubeDrop, Problem::SessileDrop] {
+    for problem in Problem::ALL {
         let pts: Vec<&PointResult> = results
             .iter()
             .filter(|r| r.point.problem == problem)
@@ -44,6 +46,7 @@ fn points_csv(results: &[PointResult]) -> anyhow::Result<Vec<u8>> {
         "kernel",
         "h_over_l0",
         "re_over_l0",
+        "potential_order",
         "density",
         "resolution",
         "l0_m",
@@ -65,6 +68,7 @@ fn points_csv(results: &[PointResult]) -> anyhow::Result<Vec<u8>> {
             v.kernel.name().to_string(),
             v.h_over_l0.to_string(),
             v.re_over_l0.to_string(),
+            v.potential_order.to_string(),
             if v.continuity {
                 "continuity+shepard"
             } else {
@@ -101,8 +105,9 @@ fn write_problem(
     let front = pareto_front(pts);
     let _ = writeln!(
         md,
-        "## {} (reference {})\n",
+        "## {} ({}; reference {})\n",
         problem.name(),
+        problem.quantity(),
         sig(pts[0].reference)
     );
     point_table(md, pts, &front);

@@ -1,7 +1,7 @@
 //! Scene keys set from the command line (`--set discretisation.kernel=quintic_spline`): every
 //! run of a case with one setting changed, e.g. to compare a kernel or a potential on the
-//! checks. The value is read as TOML (`1.3`, `true`, `"text"`); a bare word that is not TOML
-//! is taken as a string. The changed scene is validated like a scene file, and each run's
+//! checks. A number indexes an array of tables (`liquid.0.viscosity=0.0`). The value is read
+//! as TOML (`1.3`, `true`, `"text"`); a bare word that is not TOML is taken as a string. The changed scene is validated like a scene file, and each run's
 //! record stores the scene it ran.
 
 use solver::Scene;
@@ -43,21 +43,29 @@ pub fn apply(scene: &Scene, overrides: &[SceneOverride]) -> anyhow::Result<Scene
     if overrides.is_empty() {
         return Ok(scene.clone());
     }
-    let mut table: toml::Table = toml::Table::try_from(scene)?;
+    let mut root = toml::Value::Table(toml::Table::try_from(scene)?);
     for o in overrides {
-        let parts: Vec<&str> = o.key.split('.').collect();
-        let (last, path) = parts.split_last().expect("a non-empty key");
-        let mut t = &mut table;
-        for p in path {
-            t = t
-                .entry(p.to_string())
-                .or_insert_with(|| toml::Value::Table(toml::Table::new()))
-                .as_table_mut()
-                .ok_or_else(|| anyhow::anyhow!("--set {}: `{p}` is not a table", o.key))?;
+        let mut v = &mut root;
+        for p in o.key.split('.') {
+            v = match v {
+                toml::Value::Array(a) => {
+                    let n = a.len();
+                    p.parse::<usize>()
+                        .ok()
+                        .and_then(|k| a.get_mut(k))
+                        .ok_or_else(|| {
+                            anyhow::anyhow!("--set {}: `{p}` is not an index below {n}", o.key)
+                        })?
+                }
+                toml::Value::Table(t) => t
+                    .entry(p.to_string())
+                    .or_insert_with(|| toml::Value::Table(toml::Table::new())),
+                _ => anyhow::bail!("--set {}: `{p}` is inside a value, not a table", o.key),
+            };
         }
-        t.insert(last.to_string(), o.value.clone());
+        *v = o.value.clone();
     }
-    let text = toml::to_string(&table)?;
+    let text = toml::to_string(&root)?;
     Scene::from_toml_str(&text).map_err(|e| anyhow::anyhow!("--set: {e}"))
 }
 
@@ -94,6 +102,7 @@ shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 5e-4 }
             "discretisation.h_over_l0 = 1.3",
             "discretisation.potential_order=2",
             "effects.laminar_viscosity=true",
+            "liquid.0.viscosity=0.0",
         ]
         .iter()
         .map(|s| s.parse().expect("parse"))
@@ -103,6 +112,9 @@ shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 5e-4 }
         assert_eq!(d.kernel, solver::kernel::KernelKind::QuinticSpline);
         assert_eq!((d.h_over_l0, d.potential_order), (1.3, 2));
         assert!(s.effects.laminar_viscosity);
+        assert_eq!(s.liquids[0].viscosity, 0.0);
+        let bad: SceneOverride = "liquid.1.viscosity=0.0".parse().expect("parse");
+        assert!(apply(&scene(), &[bad]).is_err());
         // nothing else changed
         assert_eq!(s.bodies, scene().bodies);
         // an unknown key and a bad value are the scene's errors

@@ -102,6 +102,12 @@ impl SceneBuilder {
         self
     }
 
+    /// Order `m` of the potential's zero at its cut-off (1: Kondo 2007).
+    pub fn potential_order(mut self, m: u8) -> Self {
+        self.scene.discretisation.potential_order = m;
+        self
+    }
+
     /// End time `end_s` [s] and interval between outputs `output_interval_s` [s].
     pub fn time(mut self, end_s: f64, output_interval_s: f64) -> Self {
         self.scene.time.end = end_s;

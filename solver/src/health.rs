@@ -177,7 +177,8 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
                 m.walls[w].name, x.x, x.y, x.z, h.max_wall_depth_over_l0, h.max_wall_depth_over_l0
             ),
             format!(
-                "the walls' pressure does not hold the liquid out of the gaps between wall particles: with a wide kernel (h = {:.2} l0) the pressure gradient at the nearest-neighbour distance is weak, and the potential's cohesion pulls a wetting liquid in; use h_over_l0 ≈ 1.05 (discretisation.setting = \"natsui2021\") or raise discretisation.sound_speed (now {} m/s); health.max_wall_depth_over_l0 = inf lets the run go on",
+                "the walls' pressure does not hold the liquid out of the gaps between wall particles: with a wide kernel (support {:.2} l0, h = {:.2} l0) the pressure gradient at the nearest-neighbour distance is weak, and the potential's cohesion pulls a wetting liquid in; use a kernel of support ≈ 2.1 l0 (wendland_c2 at h_over_l0 = 1.05, discretisation.setting = \"natsui2021\"), effects.wall_repulsion = true, or raise discretisation.sound_speed (now {} m/s); health.max_wall_depth_over_l0 = inf lets the run go on",
+                m.support_m / m.l0_m,
                 m.h_m / m.l0_m,
                 m.c_m_s
             ),

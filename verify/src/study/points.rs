@@ -118,6 +118,12 @@ pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
             }
         }
     };
+    // a run that stopped has no measurement: its last state is not the answer
+    let value = if info.status == Status::Completed {
+        value
+    } else {
+        f64::NAN
+    };
     let status = match (&info.status, why) {
         (Status::Completed, None) => "completed".to_string(),
         (Status::Completed, Some(e)) => format!("not measurable: {e}"),

@@ -38,14 +38,14 @@ fn reduced_accuracy_cost_study_runs_and_reports() {
         .iter()
         .find(|r| r.starts_with("cube_drop,wendland_c2 h1.05 re4.2 sum,") && r.contains(",10,"))
         .expect("default cube point");
-    let err: f64 = default_cube.split(',').nth(12).unwrap().parse().unwrap();
+    let err: f64 = default_cube.split(',').nth(13).unwrap().parse().unwrap();
     assert!(err.abs() < 0.10, "relative period error {err}");
     // its damping is measured on the same run: a finite, positive decay rate
     let damping = rows
         .iter()
         .find(|r| r.starts_with("cube_damping,wendland_c2 h1.05 re4.2 sum,") && r.contains(",10,"))
         .expect("default cube damping point");
-    let rate: f64 = damping.split(',').nth(10).unwrap().parse().unwrap();
+    let rate: f64 = damping.split(',').nth(11).unwrap().parse().unwrap();
     assert!(rate.is_finite() && rate > 0.0, "decay rate {rate} 1/s");
     for f in [
         "cube_drop_error_vs_time.png",

@@ -114,6 +114,10 @@ pub struct Variant {
     /// Order of the potential's zero at `r_e` (1: Kondo 2007).
     #[serde(default = "kondo")]
     pub potential_order: u8,
+    /// The short-range liquid–wall repulsion in the problems with a plate (a wide kernel's
+    /// pressure does not keep a wetting liquid out of the wall).
+    #[serde(default)]
+    pub wall_repulsion: bool,
 }
 
 fn kondo() -> u8 {
@@ -128,16 +132,20 @@ impl Variant {
         re_over_l0: 4.2,
         continuity: false,
         potential_order: 1,
+        wall_repulsion: false,
     };
 
     /// A short label, e.g. `wendland_c2 h1.05 re4.2 sum` (` m2` appended for a potential of
-    /// order 2).
+    /// order 2, ` wr` with the wall repulsion).
     pub fn label(&self) -> String {
-        let order = if self.potential_order == 1 {
+        let mut order = if self.potential_order == 1 {
             String::new()
         } else {
             format!(" m{}", self.potential_order)
         };
+        if self.wall_repulsion {
+            order.push_str(" wr");
+        }
         format!(
             "{} h{} re{} {}{order}",
             self.kernel.name(),
@@ -162,7 +170,8 @@ pub enum Grid {
     /// The default and each single change from it (3 other kernels, h/l0 = 1.3, r_e = 2.1 and
     /// 3.1 l0, continuity density), and the two settings whose lattice has both shear moduli
     /// near zero (quintic spline at h = 1.05 l0 with a smooth potential: r_e = 4.4 l0 of order
-    /// 2, r_e = 5.0 l0 of order 3) × four resolutions: 10 variants × 4 × 5 problems.
+    /// 2, r_e = 5.0 l0 of order 3; their support of 3.15 l0 lets a wetting liquid into a wall,
+    /// so with the wall repulsion) × four resolutions: 10 variants × 4 × 5 problems.
     Standard,
     /// The full factorial: 4 kernels × h/l0 ∈ {1.05, 1.3} × r_e ∈ {2.1, 3.1, 4.2} × 2 density
     /// schemes × four resolutions × 2 problems (hours).
@@ -207,6 +216,7 @@ impl Grid {
                         kernel: KernelKind::QuinticSpline,
                         re_over_l0,
                         potential_order,
+                        wall_repulsion: true,
                         ..d
                     });
                 }
@@ -224,6 +234,7 @@ impl Grid {
                                     re_over_l0,
                                     continuity,
                                     potential_order: 1,
+                                    wall_repulsion: false,
                                 });
                             }
                         }
@@ -365,6 +376,7 @@ impl Point {
                     b
                 };
                 b.time(0.02, 2.0e-4)
+                    .wall_repulsion(v.wall_repulsion)
                     .solid("plate", &[(MATTE.name, theta)])
                     .body(
                         "drop",
@@ -420,6 +432,18 @@ mod tests {
             ..cube
         };
         assert_eq!((cube.id(), cube.scene()), (damping.id(), damping.scene()));
+        // the wide-kernel candidates bring the wall repulsion to the plate, and only there
+        let wide = *Grid::Standard.variants().last().expect("variants");
+        assert!(wide.wall_repulsion);
+        for problem in Problem::ALL {
+            let s = Point {
+                problem,
+                variant: wide,
+                resolution: 5,
+            }
+            .scene();
+            assert_eq!(s.effects.wall_repulsion, !s.walls.is_empty(), "{problem:?}");
+        }
         // Lamb's l = 4 rate with ν + ν_AV: larger than with ν alone
         assert!(damping.reference() > lamb::lamb_damping_rate(4, 3.13e-3 / 4500.0, 6.2e-4));
         assert_eq!(Grid::Full.variants().len(), 48);

@@ -22,7 +22,8 @@ pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyho
          the sessile matte drop's equilibrium height against the Young–Laplace solution, and the \
          static angle of zero-gravity drops on 30° and 60° plates (the spherical cap of their \
          volume and height). Data: `points.csv`. Variants are labelled `kernel h/l0 r_e/l0 \
-         density` (and `mM` for a potential of order M).\n"
+         density` (and `mM` for a potential of order M, `wr` with the liquid–wall repulsion at the \
+         plate).\n"
     );
     for problem in Problem::ALL {
         let pts: Vec<&PointResult> = results
@@ -47,6 +48,7 @@ fn points_csv(results: &[PointResult]) -> anyhow::Result<Vec<u8>> {
         "h_over_l0",
         "re_over_l0",
         "potential_order",
+        "wall_repulsion",
         "density",
         "resolution",
         "l0_m",
@@ -69,6 +71,7 @@ fn points_csv(results: &[PointResult]) -> anyhow::Result<Vec<u8>> {
             v.h_over_l0.to_string(),
             v.re_over_l0.to_string(),
             v.potential_order.to_string(),
+            v.wall_repulsion.to_string(),
             if v.continuity {
                 "continuity+shepard"
             } else {

@@ -74,25 +74,7 @@ mod tests {
     use super::*;
 
     fn scene() -> Scene {
-        Scene::from_toml_str(
-            r#"
-[discretisation]
-l0 = 1e-4
-sound_speed = 12.0
-[time]
-end = 1e-3
-output_interval = 1e-4
-[[liquid]]
-name = "water"
-density = 1000.0
-viscosity = 1e-3
-[[body]]
-name = "b"
-liquid = "water"
-shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 5e-4 }
-"#,
-        )
-        .expect("scene")
+        Scene::from_toml_str(include_str!("../../../scenes/cube_drop.toml")).expect("scene")
     }
 
     #[test]

@@ -79,7 +79,8 @@ fn the_calibrated_slab_has_the_typed_tension_at_any_thickness() {
     );
     let f = liquid_scales(&sc, design).expect("scales");
     assert_eq!(f.len(), 1);
-    // scaled, the slab has the typed σ to the calibration's tolerance
+    // scaled, the slab has the typed σ to the calibration's tolerance (the slab is
+    // deterministic: this checks that the factor returned is the one whose slab was accepted)
     let calibrated = slab_tension(&sc, 0, design, f[0]).expect("slab");
     let err = calibrated.sigma_measured_n_m / calibrated.sigma_typed_n_m - 1.0;
     assert!(

@@ -67,7 +67,7 @@ impl PairTable {
         for a in 0..self.n_phases {
             for b in 0..self.n_phases {
                 let s = match (f(a), f(b)) {
-                    (Some(fa), Some(fb)) if a == b => fa.min(fb),
+                    (Some(fa), Some(_)) if a == b => fa,
                     (Some(fa), Some(fb)) => (fa * fb).sqrt(),
                     (Some(fl), None) | (None, Some(fl)) => fl,
                     (None, None) => 1.0,

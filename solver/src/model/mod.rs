@@ -85,6 +85,9 @@ pub struct Model {
     pub interaction_radius_m: f64,
     /// Periodic axes: pair vectors are minimum images ([`PeriodicBox`]).
     pub periodic: PeriodicBox,
+    /// Uniform pressure added to every liquid particle's EOS pressure [Pa] (0 but in fully
+    /// periodic diagnostic scenes).
+    pub background_pressure_pa: f64,
 }
 
 impl Model {
@@ -196,6 +199,7 @@ impl Model {
             neighbour_skin_m,
             interaction_radius_m,
             periodic,
+            background_pressure_pa: scene.density.background_pressure,
             walls: WallSolid::of(scene),
             wall_repulsion_strength_j,
             wall_repulsion_range_m: repulsion::RANGE_OVER_L0 * l0,

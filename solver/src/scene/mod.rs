@@ -406,6 +406,17 @@ pub struct DensityControl {
     /// 2 µJ, drawn from the spurious surface tension.
     #[serde(default)]
     pub negative_pressure: NegativePressure,
+    /// A uniform pressure added to every liquid particle's EOS pressure [Pa]. Default 0. Only
+    /// in a scene periodic along x, y and z: it holds the reference lattice at the pressure a
+    /// drop's interior carries, whose pair forces add to the lattice's shear stiffness (the
+    /// `shear_wave` case); a free surface would feel it as a force. Its work is not booked in
+    /// the energy budget (in a periodic box the liquid's volume hardly changes).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub background_pressure: f64,
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
 }
 
 /// Treatment of negative pressure in the equation of state.
@@ -430,6 +441,7 @@ impl Default for DensityControl {
             reinit: Reinit::None,
             reinit_every: default_reinit_every(),
             negative_pressure: NegativePressure::Clip,
+            background_pressure: 0.0,
         }
     }
 }

@@ -297,6 +297,22 @@ fn effects(s: &Scene) -> R {
             "must be at least 1 step",
         ));
     }
+    if !d.background_pressure.is_finite() {
+        return Err(SceneError::invalid(
+            "density.background_pressure",
+            d.background_pressure,
+            "must be a finite pressure [Pa]",
+        ));
+    }
+    let p = &s.periodic;
+    if d.background_pressure != 0.0 && (p.x.is_none() || p.y.is_none() || p.z.is_none()) {
+        return Err(SceneError::invalid(
+            "density.background_pressure",
+            d.background_pressure,
+            "only in a scene periodic along x, y and z (a free surface or a wall would feel it \
+             as a force)",
+        ));
+    }
     Ok(())
 }
 

@@ -49,6 +49,10 @@ impl Simulation {
                 *pr = if clip { p.max(0.0) } else { p };
                 *v = m.mass[ph as usize] / r;
             });
+        if m.background_pressure_pa != 0.0 {
+            let p_bg = m.background_pressure_pa;
+            p.pressure[..nf].par_iter_mut().for_each(|pr| *pr += p_bg);
+        }
         if m.effects.walls {
             walls::update(
                 &k,

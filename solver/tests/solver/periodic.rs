@@ -99,3 +99,32 @@ fn periodic_ranges_are_checked() {
     // a body reaching past the range would overlap its own image
     assert!(err(periodic_block(12, "", "[-5e-4, 5e-4]")).contains("within the periodic range"));
 }
+
+#[test]
+fn a_background_pressure_is_uniform_in_a_periodic_box_and_refused_elsewhere() {
+    // the lattice at ρ0 carries exactly the background pressure, and still no net force
+    let text = periodic_block(10, "", &full_range(10)).replace(
+        "[periodic]",
+        "[density]\nbackground_pressure = 3.0e4\n[periodic]",
+    );
+    let s = sim(&text);
+    let p = &s.particles;
+    for &pr in &p.pressure[..p.n_fluid] {
+        // Tait's pressure at ρ0 ± 1e-12 is below 1e-6 Pa; the sum keeps 3e4 to rounding
+        assert!((pr - 3.0e4).abs() < 1e-6, "p = {pr} Pa");
+    }
+    // the pressure's pair forces cancel by symmetry like the potential's (scale as in
+    // a_periodic_lattice_has_the_reference_density_and_no_force, plus p V² ∇W ~ p l0²/m =
+    // 3e4 · 1e-8 / 4.5e-9 = 6.7e4 m/s²)
+    let scale = 0.4 / (4500.0 * 1e-8) + 3.0e4 * 1e-8 / (4500.0 * 1e-12);
+    let worst = p.acc.iter().map(|a| a.norm()).fold(0.0, f64::max);
+    assert!(worst < 1e-11 * scale, "largest |a| = {worst} m/s²");
+    // a box open along z would feel it at its faces: refused
+    let open = text.replace(&format!("z = {}\n", full_range(10)), "");
+    assert!(open.len() < text.len());
+    let err = Scene::from_toml_str(&open).expect_err("refused");
+    assert!(
+        err.to_string().contains("density.background_pressure"),
+        "{err}"
+    );
+}

@@ -91,8 +91,16 @@ fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
     let d = &scene.discretisation;
     let unit = SLAG.surface_tension_n_m / d.l0;
     let g = SLAG.density_kg_m3 * w_el * w_el / (m.k_per_m * m.k_per_m) / unit;
-    let born = if scene.effects.interfacial_tension {
-        let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
+    let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
+    let born = if scene.density.background_pressure != 0.0 {
+        format!(
+            "Born G44 of the reference lattice at the box's state (lattice density, the EOS pressure raised by p_b = {:.3} σ/l0 as in a drop's interior): potential {:.3} + pressure term {:+.3} = {:.3} σ/l0",
+            scene.density.background_pressure / unit,
+            e.potential.g44,
+            e.pressure.g44,
+            e.total().g44
+        )
+    } else if scene.effects.interfacial_tension {
         format!(
             "Born G44 of the reference lattice at the box's state (lattice density, zero pressure: the potential's term, r_e = {} l0): {:.3} σ/l0; in a drop's interior, where the EOS carries p_b = {:.3} σ/l0 ({} at h = {} l0), the pressure term adds {:+.3}",
             d.re_over_l0,

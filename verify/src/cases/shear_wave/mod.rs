@@ -8,9 +8,12 @@
 //! for the amplitude `A(t)` of the velocity's `sin(kz)` mode (Kelvin–Voigt), an oscillation of
 //! angular frequency `√(G k²/ρ − (ν k²/2)²)` when `G` is large enough.
 //!
-//! Two runs: with the paper's effects (the pairwise potential and both viscosities), and with
+//! Three runs: with the paper's effects (the pairwise potential and both viscosities); with
 //! the viscosities alone — no potential, so no cohesive background pressure and no lattice
-//! stress: that isolates the SPH viscous operator from the lattice's elasticity. Measured from
+//! stress: that isolates the SPH viscous operator from the lattice's elasticity; and with the
+//! paper's effects at the pressure a drop's interior carries (`density.background_pressure` =
+//! the cohesive pressure `p_b` of the Born sums), whose pair forces add the pressure term of
+//! the lattice's modulus. Measured from
 //! `A(t)` (recorded at every output): the effective viscosity `ν_eff` against `μ/ρ` (the
 //! artificial viscosity's `α1 h c/10`, 4 % of it here, is noted beside), and whether and how
 //! fast the wave rings; beside them the shear modulus `G44` that the Born sums of the reference
@@ -24,6 +27,7 @@ mod measure;
 
 use super::analysis::{self, Analysis};
 use super::scene::{sound_speed_for, SceneBuilder, SLAG};
+use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
 use solver::scene::{BodyShape, SceneAxis, VelocityWave};
 use solver::Simulation;
@@ -55,6 +59,15 @@ fn design(f: Fidelity) -> (usize, f64) {
 const SINE: &str = "vx_sin_kz_m_s";
 const COSINE: &str = "vx_cos_kz_m_s";
 
+/// `scene` with the EOS pressure raised by the cohesive pressure `p_b` [Pa] a drop's interior
+/// carries at its setting (the Born sums' `p_b`, in σ/l0 times σ/l0).
+fn with_interior_pressure(mut scene: solver::Scene) -> solver::Scene {
+    let d = &scene.discretisation;
+    let e = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
+    scene.density.background_pressure = e.background_pressure * SLAG.surface_tension_n_m / d.l0;
+    scene
+}
+
 impl Case for ShearWave {
     fn name(&self) -> &'static str {
         "shear_wave"
@@ -79,36 +92,45 @@ impl Case for ShearWave {
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
         let (n, end) = design(f);
         let l0 = BOX_M / n as f64;
-        [("potential_and_viscosity", true), ("viscosity_only", false)]
-            .into_iter()
-            .map(|(id, tension)| {
-                let scene = SceneBuilder::new(l0, sound_speed_for(&SLAG, l0, 0.0))
-                    .time(end, 5e-5)
-                    .paper_effects()
-                    .interfacial_tension(tension)
-                    .liquid(&SLAG)
-                    .waving_body(
-                        "box",
-                        SLAG.name,
-                        BodyShape::Box {
-                            min: [0.0; 3],
-                            max: [BOX_M; 3],
-                        },
-                        VelocityWave {
-                            amplitude: [AMPLITUDE_M_S, 0.0, 0.0],
-                            along: SceneAxis::Z,
-                            wavelength: BOX_M,
-                        },
-                    )
-                    .periodic_box([0.0; 3], [BOX_M; 3])
-                    .build();
-                RunSpec {
-                    id: id.into(),
-                    scene,
-                    snapshot_times_s: vec![],
-                }
-            })
-            .collect()
+        [
+            ("potential_and_viscosity", true, false),
+            ("viscosity_only", false, false),
+            ("potential_viscosity_and_p_b", true, true),
+        ]
+        .into_iter()
+        .map(|(id, tension, interior)| {
+            let scene = SceneBuilder::new(l0, sound_speed_for(&SLAG, l0, 0.0))
+                .time(end, 5e-5)
+                .paper_effects()
+                .interfacial_tension(tension)
+                .liquid(&SLAG)
+                .waving_body(
+                    "box",
+                    SLAG.name,
+                    BodyShape::Box {
+                        min: [0.0; 3],
+                        max: [BOX_M; 3],
+                    },
+                    VelocityWave {
+                        amplitude: [AMPLITUDE_M_S, 0.0, 0.0],
+                        along: SceneAxis::Z,
+                        wavelength: BOX_M,
+                    },
+                )
+                .periodic_box([0.0; 3], [BOX_M; 3])
+                .build();
+            let scene = if interior {
+                with_interior_pressure(scene)
+            } else {
+                scene
+            };
+            RunSpec {
+                id: id.into(),
+                scene,
+                snapshot_times_s: vec![],
+            }
+        })
+        .collect()
     }
     fn probe(&self, sim: &Simulation) -> Vec<(&'static str, f64)> {
         let p = &sim.particles;

@@ -32,6 +32,7 @@ fn reduced_accuracy_cost_study_runs_and_reports() {
     }
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     assert!(md.contains("Pareto") && md.contains("Worth it"));
+    assert!(md.contains("Which setting meets which target"));
     // the default variant's cube-drop period at 10³ is within 10 % of Lamb (measured +7 %; the
     // bound of the solver's acceptance test at small resolution)
     let default_cube = rows

@@ -71,6 +71,18 @@ impl Problem {
         }
     }
 
+    /// The liquid model's target for this problem as a relative error [-], with its source
+    /// (README, "Targets of the liquid model"); `None` where the README sets none.
+    pub fn target(self) -> Option<(f64, &'static str)> {
+        match self {
+            Problem::CubeDrop => Some((0.03, "period within 3 %")),
+            Problem::CubeDamping => Some((0.30, "damping within ±30 % of Lamb (ν + ν_AV)")),
+            Problem::ContactAngle30 => Some((4.0 / 30.0, "±4° at 30°")),
+            Problem::ContactAngle60 => Some((2.0 / 60.0, "±2° for 60–120°")),
+            Problem::SessileDrop => None,
+        }
+    }
+
     /// The contact angle of the plate [°], for the problems with a plate.
     fn plate_angle_deg(self) -> Option<f64> {
         match self {

@@ -34,8 +34,67 @@ pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyho
             write_problem(&mut md, out, problem, &pts, variants)?;
         }
     }
+    targets_table(&mut md, results, variants);
     crate::output::atomic_write(&out.join("summary.md"), md.as_bytes())?;
     Ok(())
+}
+
+/// Per variant and problem with a target: the coarsest measured resolution within the liquid
+/// model's target, and its wall time — which setting reaches which target, and at what cost.
+fn targets_table(md: &mut String, results: &[PointResult], variants: &[Variant]) {
+    let problems: Vec<Problem> = Problem::ALL
+        .into_iter()
+        .filter(|p| p.target().is_some())
+        .collect();
+    let _ = writeln!(
+        md,
+        "## Which setting meets which target
+"
+    );
+    let _ = writeln!(
+        md,
+        "The coarsest measured resolution within each target of the liquid model (README, \
+         \"Targets of the liquid model\") and its wall time; \"—\" where no measured point \
+         meets it.\n"
+    );
+    let head: Vec<String> = problems
+        .iter()
+        .map(|p| format!("{} ({})", p.name(), p.target().map_or("", |t| t.1)))
+        .collect();
+    let _ = writeln!(md, "| variant | {} | all |", head.join(" | "));
+    let _ = writeln!(md, "|---|{}---|", "---|".repeat(problems.len()));
+    for v in variants {
+        let cells: Vec<Option<&PointResult>> = problems
+            .iter()
+            .map(|&p| {
+                let tol = p.target().map_or(0.0, |t| t.0);
+                results
+                    .iter()
+                    .filter(|r| r.point.problem == p && r.point.variant == *v)
+                    .filter(|r| r.relative_error.abs() <= tol)
+                    .min_by_key(|r| r.point.resolution)
+            })
+            .collect();
+        let text: Vec<String> = cells
+            .iter()
+            .map(|c| match c {
+                Some(r) => format!(
+                    "n{} ({:+.1} %, {:.1} s)",
+                    r.point.resolution,
+                    100.0 * r.relative_error,
+                    r.wall_time_s
+                ),
+                None => "—".into(),
+            })
+            .collect();
+        let all = if cells.iter().all(Option::is_some) {
+            "**yes**"
+        } else {
+            "no"
+        };
+        let _ = writeln!(md, "| {} | {} | {all} |", v.label(), text.join(" | "));
+    }
+    let _ = writeln!(md);
 }
 
 /// `points.csv`: one row per point.

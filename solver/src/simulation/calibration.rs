@@ -199,17 +199,12 @@ pub fn slab_tension(
 /// along z.
 fn surface_excess(w: &[[f64; 9]], pos: &[crate::state::Vec3]) -> f64 {
     let aniso = |w: &[f64; 9]| w[8] - 0.5 * (w[0] + w[4]);
-    let (lo, hi) = pos
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-            (a.min(x.z), b.max(x.z))
-        });
-    let third = (hi - lo) / 3.0;
+    let (lo, hi) = middle_third(pos);
     let (mut bulk, mut n_bulk, mut total) = (0.0, 0usize, 0.0);
     for (w, x) in w.iter().zip(pos) {
         let a = aniso(w);
         total += a;
-        if x.z > lo + third && x.z < hi - third {
+        if x.z > lo && x.z < hi {
             bulk += a;
             n_bulk += 1;
         }

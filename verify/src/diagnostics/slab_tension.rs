@@ -25,7 +25,7 @@ pub struct Setting {
 /// A markdown table of `σ_KB/σ` for every liquid of `scene` at every setting.
 pub fn table(scene: &Scene, settings: &[Setting], design: SlabDesign) -> anyhow::Result<String> {
     let mut out = String::from(
-        "| kernel | h/l0 | r_e/l0 | m | liquid | σ typed (N/m) | σ_KB (N/m) | σ_KB/σ | ± (1 s.e.) | ρ_bulk/ρ0 | σ_KB/σ calibrated | particles | steps | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| kernel | h/l0 | r_e/l0 | m | liquid | σ typed (N/m) | σ_KB (N/m) | σ_KB/σ | ± (1 s.e.) | ρ_bulk/ρ0 | σ_KB/σ after one scaling by σ/σ_KB | particles | steps | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for s in settings {
         let mut sc = scene.clone();
@@ -38,7 +38,8 @@ pub fn table(scene: &Scene, settings: &[Setting], design: SlabDesign) -> anyhow:
             let t0 = Instant::now();
             let m = slab_tension(&sc, liquid, design, 1.0)?;
             let ratio = m.sigma_measured_n_m / m.sigma_typed_n_m;
-            // the calibrated coefficients' slab: what is left after one scaling
+            // what one scaling leaves: the response's nonlinearity (a run's calibration takes
+            // secant steps until it is within tolerance, `calibrate_liquid`)
             let after = slab_tension(&sc, liquid, design, 1.0 / ratio)?;
             let residual = after.sigma_measured_n_m / after.sigma_typed_n_m;
             writeln!(

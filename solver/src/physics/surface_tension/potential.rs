@@ -77,7 +77,8 @@ impl Kondo2007Potential {
 
     /// The pair force magnitude `C P'(r)` [N] of a pair with coefficient `c` [N/m²] at a
     /// distance `r < r_e` [m] (no cut-off test: the force loop masks its lanes itself).
-    /// Negative is attractive: the force on `i` is this along `e_ij` (from `j` to `i`). The one place `P'` is written.
+    /// Negative is attractive: the force on `i` is this along `e_ij` (from `j` to `i`). The
+    /// one place `P'` is written.
     #[inline(always)]
     pub fn pair_force_inside(&self, c_n_m2: f64, r_m: f64) -> f64 {
         let a = r_m - self.r_e_m;

@@ -22,6 +22,22 @@ pub fn kernel_sum<K: Kernel>(kernel: &K, l0: f64) -> f64 {
     sum
 }
 
+/// `Σ_j W(|r_ij|)` for a site `depth` lattice planes below a flat free surface of the lattice
+/// (a (001) plane; depth 0 is the outer plane), self included [1/m³].
+pub fn half_space_kernel_sum<K: Kernel>(kernel: &K, l0: f64, depth: i64) -> f64 {
+    let n = (kernel.support_m() / l0).ceil() as i64 + 1;
+    let mut sum = 0.0;
+    for k in -n..=depth.min(n) {
+        for j in -n..=n {
+            for i in -n..=n {
+                let r = l0 * ((i * i + j * j + k * k) as f64).sqrt();
+                sum += kernel.w(r);
+            }
+        }
+    }
+    sum
+}
+
 /// Number of lattice neighbours strictly within `radius_m` (self excluded).
 pub fn neighbour_count(radius_m: f64, l0: f64) -> usize {
     let n = (radius_m / l0).ceil() as i64 + 1;

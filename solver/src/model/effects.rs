@@ -20,6 +20,8 @@ pub struct Effects {
     pub no_slip_walls: bool,
     /// The short-range liquid–wall repulsion (Monaghan 1994).
     pub wall_repulsion: bool,
+    /// Particle shifting's coefficient `A` [-], if shifting is on.
+    pub particle_shifting: Option<f64>,
     /// Density scheme.
     pub density: DensityScheme,
     /// Density re-initialisation `(filter, every n steps)`, if any.
@@ -42,6 +44,7 @@ impl Effects {
             interfacial_tension: e.interfacial_tension,
             walls: !scene.walls.is_empty(),
             wall_repulsion: e.wall_repulsion,
+            particle_shifting: e.particle_shifting.as_ref().map(|p| p.coefficient),
             no_slip_walls: scene
                 .walls
                 .iter()
@@ -90,6 +93,9 @@ impl Effects {
         }
         if self.wall_repulsion {
             v.push("liquid–wall repulsion (Monaghan 1994, range 0.8 l0)".into());
+        }
+        if let Some(a) = self.particle_shifting {
+            v.push(format!("particle shifting (A = {a})"));
         }
         v.push(match self.density {
             DensityScheme::Summation => "density: summation".into(),

@@ -58,6 +58,9 @@ pub struct Model {
     pub tension_scales: Vec<f64>,
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
     pub lattice_kernel_sum: f64,
+    /// Own-phase kernel sum below which particle shifting treats a particle as at a boundary
+    /// of its phase [1/m³] ([`crate::physics::shifting::boundary_kernel_sum`]).
+    pub boundary_kernel_sum: f64,
     /// Rest volume of a particle `m/ρ0` [m³].
     pub rest_volume_m3: f64,
     /// Lattice surface sum of the potential `S` [m³].
@@ -103,6 +106,9 @@ impl Model {
             order: d.potential_order,
         };
         let lattice_kernel_sum = with_kernel!(d.kernel, K => lattice::kernel_sum(&K::new(h), l0));
+        let boundary_kernel_sum = with_kernel!(d.kernel, K => {
+            crate::physics::shifting::boundary_kernel_sum(&K::new(h), l0)
+        });
         let surface_sum_m3 = lattice::potential_surface_sum(&potential);
         if surface_sum_m3 <= 0.0 {
             return Err(SceneError::invalid(
@@ -190,6 +196,7 @@ impl Model {
             pairs,
             tension_scales: vec![1.0; n_liquids],
             lattice_kernel_sum,
+            boundary_kernel_sum,
             rest_volume_m3,
             surface_sum_m3,
             bulk_potential_sum_m3,

@@ -85,6 +85,9 @@ pub struct Observables {
     /// Compression energy removed by the density re-initialisations since the start [J]
     /// (either sign).
     pub dissipated_density_reinit_j: f64,
+    /// Energy the particle shifting took out since the start [J] (either sign; first order
+    /// in the shift, see [`crate::physics::forces::ledger::Dissipation::shifting_j`]).
+    pub dissipated_shifting_j: f64,
     /// The energy budget [J]: kinetic + interfacial + compression + gravity + wall repulsion
     /// + everything dissipated. Constant for a conservative discretisation.
     pub energy_balance_j: f64,
@@ -180,6 +183,7 @@ pub fn observe(
         dissipated_wall_pressure_j: d.of(Ledger::WallPressure, true)
             + d.of(Ledger::WallPressure, false),
         dissipated_density_reinit_j: d.density_reinit_j,
+        dissipated_shifting_j: d.shifting_j,
         energy_balance_j: kinetic_energy_j
             + interfacial_energy_j
             + compression_energy_j

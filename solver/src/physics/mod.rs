@@ -3,5 +3,6 @@
 pub mod density;
 pub mod eos;
 pub mod forces;
+pub mod shifting;
 pub mod surface_tension;
 pub mod walls;

@@ -366,6 +366,25 @@ pub struct Effects {
     /// walls. Default off.
     #[serde(default)]
     pub wall_repulsion: bool,
+    /// Particle shifting (Lind et al. 2012; Sun et al. 2017's δ⁺-SPH form): each step's drift
+    /// also moves a particle down the gradient of the particle concentration, only along the
+    /// boundary near a free surface, another liquid or a wall. Omit for none (the default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub particle_shifting: Option<ParticleShifting>,
+}
+
+/// Coefficients of particle shifting.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ParticleShifting {
+    /// `A` in `δr = −A h U dt ∇C` [-] (`U` the largest fluid speed, `dt` the step). Default 4,
+    /// Sun et al. 2017's `CFL·Ma·(2h)²`.
+    #[serde(default = "f_4")]
+    pub coefficient: f64,
+}
+
+fn f_4() -> f64 {
+    4.0
 }
 
 /// Coefficients of Monaghan's artificial viscosity.

@@ -278,6 +278,16 @@ fn effects(s: &Scene) -> R {
             "its strength scales with the cohesive pressure of the potential: it needs effects.interfacial_tension",
         ));
     }
+    if let Some(ps) = &e.particle_shifting {
+        // the shift per step is about A U dt ≤ A × 0.25 h: beyond A = 8 it exceeds 2 h
+        if !(ps.coefficient > 0.0 && ps.coefficient <= 8.0) {
+            return Err(SceneError::invalid(
+                "effects.particle_shifting.coefficient",
+                ps.coefficient,
+                "A in δr = −A h U dt ∇C: in (0, 8] (4 is Sun et al. 2017's; larger moves a particle more than its spacing per step)",
+            ));
+        }
+    }
     if let Some(av) = &e.artificial_viscosity {
         non_negative("effects.artificial_viscosity.alpha1", av.alpha1, "α1")?;
         non_negative("effects.artificial_viscosity.alpha2", av.alpha2, "α2")?;

@@ -21,6 +21,7 @@ mod evaluate;
 mod force_terms;
 mod limits;
 mod neighbours;
+mod shifting;
 
 use crate::error::SimError;
 use crate::health;
@@ -46,7 +47,7 @@ pub struct StepTimings {
     pub density_s: f64,
     /// Pair forces.
     pub forces_s: f64,
-    /// Kicks, drift and health checks.
+    /// Kicks, drift (and particle shifting, if on) and health checks.
     pub integration_s: f64,
 }
 
@@ -81,6 +82,8 @@ pub struct Simulation {
     /// The stable step of the initial state [s] (for the collapse check).
     pub(crate) first_dt_s: f64,
     drho_next: Vec<f64>,
+    /// This step's shifting displacement per fluid particle [m] (empty without shifting).
+    shift: Vec<crate::state::Vec3>,
 }
 
 impl Simulation {
@@ -123,6 +126,11 @@ impl Simulation {
         } else {
             Vec::new()
         };
+        let shift = if model.effects.particle_shifting.is_some() {
+            vec![crate::state::Vec3::zeros(); particles.n_fluid]
+        } else {
+            Vec::new()
+        };
         Ok(Simulation {
             scene: scene.clone(),
             model,
@@ -139,6 +147,7 @@ impl Simulation {
             max_acc2: 0.0,
             first_dt_s: 0.0,
             drho_next,
+            shift,
         })
     }
 
@@ -152,6 +161,9 @@ impl Simulation {
         let half = 0.5 * dt;
         let continuity = self.model.effects.continuity();
         let t0 = Instant::now();
+        if let Some(a) = self.model.effects.particle_shifting {
+            self.shift_particles::<K>(a, dt);
+        }
         {
             let p = &mut self.particles;
             let nf = p.n_fluid;

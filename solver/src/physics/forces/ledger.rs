@@ -157,6 +157,11 @@ pub struct Dissipation {
     /// Compression energy removed by the density re-initialisations so far [J]
     /// (`E(before) − E(after)`; either sign).
     pub density_reinit_j: f64,
+    /// Energy the particle shifting took out so far [J] (either sign): the work of the
+    /// forces along each step's shift, `Σ_i m_i a_i·δr_i` — first order in the shift, and
+    /// counting the viscous part of `a_i` too, so the budget closes only to that order.
+    #[serde(default)]
+    pub shifting_j: f64,
     /// The booked power of the current accelerations at the current velocities.
     pub power: Power,
 }
@@ -180,10 +185,10 @@ impl Dissipation {
         self.dissipated_j[channel(ledger as usize, wall)]
     }
 
-    /// Everything taken out of the liquid so far [J]: every channel and the
-    /// re-initialisations.
+    /// Everything taken out of the liquid so far [J]: every channel, the re-initialisations
+    /// and the shifting.
     pub fn total_j(&self) -> f64 {
-        self.dissipated_j.iter().sum::<f64>() + self.density_reinit_j
+        self.dissipated_j.iter().sum::<f64>() + self.density_reinit_j + self.shifting_j
     }
 }
 

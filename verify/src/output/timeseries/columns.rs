@@ -58,6 +58,8 @@ pub enum RunColumn {
     DissipatedWallPressure,
     /// Compression energy removed by density re-initialisation [J].
     DissipatedDensityReinit,
+    /// Energy taken out by particle shifting [J].
+    DissipatedShifting,
     /// The energy budget: the energies plus everything dissipated [J].
     EnergyBalance,
     /// Total momentum along an axis [kg m/s].
@@ -72,7 +74,7 @@ pub enum RunColumn {
 
 impl RunColumn {
     /// Every column of the whole run, in file order.
-    pub const ALL: [RunColumn; 20] = [
+    pub const ALL: [RunColumn; 21] = [
         RunColumn::Time,
         RunColumn::Dt,
         RunColumn::Step,
@@ -86,6 +88,7 @@ impl RunColumn {
         RunColumn::DissipatedArtificial,
         RunColumn::DissipatedWallPressure,
         RunColumn::DissipatedDensityReinit,
+        RunColumn::DissipatedShifting,
         RunColumn::EnergyBalance,
         RunColumn::Momentum(Axis::X),
         RunColumn::Momentum(Axis::Y),
@@ -111,6 +114,7 @@ impl RunColumn {
             RunColumn::DissipatedArtificial => "dissipated_artificial_J".into(),
             RunColumn::DissipatedWallPressure => "dissipated_wall_pressure_J".into(),
             RunColumn::DissipatedDensityReinit => "dissipated_density_reinit_J".into(),
+            RunColumn::DissipatedShifting => "dissipated_shifting_J".into(),
             RunColumn::EnergyBalance => "energy_balance_J".into(),
             RunColumn::Momentum(ax) => format!("momentum_{}_kg_m_s", ax.name()),
             RunColumn::MaxSpeed => "max_speed_m_s".into(),
@@ -135,6 +139,7 @@ impl RunColumn {
             RunColumn::DissipatedArtificial => o.dissipated_artificial_j,
             RunColumn::DissipatedWallPressure => o.dissipated_wall_pressure_j,
             RunColumn::DissipatedDensityReinit => o.dissipated_density_reinit_j,
+            RunColumn::DissipatedShifting => o.dissipated_shifting_j,
             RunColumn::EnergyBalance => o.energy_balance_j,
             RunColumn::Momentum(ax) => o.momentum_kg_m_s[ax.index()],
             RunColumn::MaxSpeed => o.max_speed_m_s,

@@ -263,3 +263,18 @@ fn wall_repulsion_without_walls_or_tension() {
         &["effects.wall_repulsion", "interfacial_tension"],
     );
 }
+
+#[test]
+fn particle_shifting_coefficient_out_of_range() {
+    for a in ["0.0", "-1.0", "9.0", "nan"] {
+        assert_names(
+            &block_scene(
+                6,
+                1e-4,
+                &format!("particle_shifting = {{ coefficient = {a} }}"),
+                "",
+            ),
+            &["effects.particle_shifting.coefficient", "(0, 8]"],
+        );
+    }
+}

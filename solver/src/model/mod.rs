@@ -56,6 +56,10 @@ pub struct Model {
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
     pub tension_scales: Vec<f64>,
+    /// Per pair of liquids `(a, b, f)` with `a < b`: the factor the relaxed calibration put on
+    /// `C_ab` beyond `√(f_a f_b)` ([`Model::scale_pair_tension`]); empty with the lattice
+    /// calibration.
+    pub pair_tension_scales: Vec<(usize, usize, f64)>,
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
     pub lattice_kernel_sum: f64,
     /// Own-phase kernel sum below which particle shifting treats a particle as at a boundary
@@ -195,6 +199,7 @@ impl Model {
             mu_pair,
             pairs,
             tension_scales: vec![1.0; n_liquids],
+            pair_tension_scales: Vec::new(),
             lattice_kernel_sum,
             boundary_kernel_sum,
             rest_volume_m3,
@@ -224,6 +229,25 @@ impl Model {
         }
         for (d, f) in self.wall_repulsion_strength_j.iter_mut().zip(scales) {
             *d *= f;
+        }
+    }
+
+    /// Scales the coefficient of liquids `a` and `b` by `f` (on top of the liquids' own
+    /// factors) and records it.
+    pub fn scale_pair_tension(&mut self, a: usize, b: usize, f: f64) {
+        assert!(
+            a < self.n_liquids && b < self.n_liquids,
+            "a pair of liquids"
+        );
+        self.pairs.scale_pair(a, b, f);
+        let (a, b) = (a.min(b), a.max(b));
+        match self
+            .pair_tension_scales
+            .iter_mut()
+            .find(|p| (p.0, p.1) == (a, b))
+        {
+            Some(p) => p.2 *= f,
+            None => self.pair_tension_scales.push((a, b, f)),
         }
     }
 

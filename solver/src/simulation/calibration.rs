@@ -19,8 +19,11 @@
 //! `a_b` per particle leaves the surfaces' excess (the dividing surface counts particles).
 //!
 //! With `discretisation.tension_calibration = "relaxed_slab"` a run scales each liquid's
-//! coefficients by `σ/σ_KB` measured this way ([`liquid_scales`]); the factors are computed
-//! once per process for a given scene (cached in memory).
+//! coefficients until its slab has the typed σ, then each pair of liquids' coefficient until a
+//! two-liquid slab (one layer on the other: two free surfaces and the interface) has the
+//! typed σ_ab ([`tension_scales`]); the factors are computed once per process for a given
+//! scene (cached in memory). Liquid–solid pairs take the liquid's factor: a wall's relaxed
+//! calibration is not built.
 
 use super::Simulation;
 use crate::error::SimError;
@@ -132,9 +135,155 @@ pub fn slab_tension(
     scale: f64,
 ) -> Result<SlabTension, SimError> {
     let slab = slab_scene(scene, liquid, design)?;
-    let mut sim = Simulation::new(&slab)?;
-    if scale != 1.0 {
-        sim.model.scale_tension(&[scale]);
+    let r = relax(&slab, design, |m| {
+        if scale != 1.0 {
+            m.scale_tension(&[scale]);
+        }
+    })?;
+    Ok(SlabTension {
+        liquid: slab.liquids[0].name.clone(),
+        sigma_typed_n_m: slab.liquids[0].surface_tension.unwrap_or(0.0),
+        // two free surfaces
+        sigma_measured_n_m: 0.5 * r.excess_n_m,
+        sigma_standard_error_n_m: 0.5 * r.excess_standard_error_n_m,
+        particles: r.particles,
+        steps: r.steps,
+        bulk_density_ratio: r.bulk_density_ratio[0],
+    })
+}
+
+/// The two-liquid slab of liquids `a` and `b` (indices into `scene.liquids`): `a`'s layer
+/// below `b`'s, each as thick as a one-liquid slab, so the slab has a free surface of each and
+/// the interface between them; otherwise as [`slab_scene`], its run as many crossings of the
+/// whole thickness.
+pub fn pair_slab_scene(
+    scene: &Scene,
+    a: usize,
+    b: usize,
+    design: SlabDesign,
+) -> Result<Scene, SceneError> {
+    let mut s = slab_scene(scene, a, design)?;
+    let lb = scene
+        .liquids
+        .get(b)
+        .ok_or_else(|| SceneError::invalid("liquid", b, "no liquid of this index in the scene"))?;
+    if a == b {
+        return Err(SceneError::invalid("liquid", b, "a pair of two liquids"));
+    }
+    let BodyShape::Box { min, max } = s.bodies[0].shape.clone() else {
+        unreachable!("the slab is a box")
+    };
+    let thick = max[2] - min[2];
+    s.description = format!(
+        "relaxed slab of {} under {} (tension calibration)",
+        scene.liquids[a].name, lb.name
+    );
+    s.liquids.push(lb.clone());
+    s.interfaces = scene
+        .interfaces
+        .iter()
+        .filter(|i| {
+            let has = |n: &str| i.liquids.iter().any(|l| l == n);
+            has(&scene.liquids[a].name) && has(&lb.name)
+        })
+        .cloned()
+        .collect();
+    s.bodies[0].name = "lower".into();
+    let mut upper = s.bodies[0].clone();
+    upper.name = "upper".into();
+    upper.liquid = Some(lb.name.clone());
+    upper.shape = BodyShape::Box {
+        min: [min[0], min[1], max[2]],
+        max: [max[0], max[1], max[2] + thick],
+    };
+    s.bodies.push(upper);
+    s.time.end = design.crossings * 2.0 * thick / scene.discretisation.sound_speed;
+    s.time.output_interval = s.time.end;
+    s.validate()?;
+    Ok(s)
+}
+
+/// The measured interfacial tension of a two-liquid slab.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PairSlabTension {
+    /// The two liquids (lower, upper).
+    pub liquids: [String; 2],
+    /// The interfacial tension the scene gives, `σ_a + σ_b − 2σ_pair` [N/m].
+    pub sigma_typed_n_m: f64,
+    /// The relaxed slab's interfacial tension [N/m]: its total surface excess less the two
+    /// free surfaces' tensions given.
+    pub sigma_measured_n_m: f64,
+    /// The standard error of the slab's time average [N/m] (the free surfaces' own errors
+    /// not included).
+    pub sigma_standard_error_n_m: f64,
+    /// The slab's particles.
+    pub particles: usize,
+    /// Steps taken.
+    pub steps: u64,
+}
+
+/// Relaxes the two-liquid slab of liquids `a` (below) and `b` with the liquids' coefficients
+/// scaled by `liquid_scales` (`f_a`, `f_b`), the pair's by `pair_scale` on top of `√(f_a f_b)`,
+/// and measures the interfacial tension: the slab's total excess less `free_surfaces_n_m`,
+/// the two liquids' own surface tensions at those factors [N/m] (their one-liquid slabs').
+pub fn pair_slab_tension(
+    scene: &Scene,
+    (a, b): (usize, usize),
+    design: SlabDesign,
+    liquid_scales: [f64; 2],
+    pair_scale: f64,
+    free_surfaces_n_m: [f64; 2],
+) -> Result<PairSlabTension, SimError> {
+    let slab = pair_slab_scene(scene, a, b, design)?;
+    let typed = typed_interfacial_tension(&slab, 0, 1)?;
+    let r = relax(&slab, design, |m| {
+        m.scale_tension(&liquid_scales);
+        if pair_scale != 1.0 {
+            m.scale_pair_tension(0, 1, pair_scale);
+        }
+    })?;
+    Ok(PairSlabTension {
+        liquids: [slab.liquids[0].name.clone(), slab.liquids[1].name.clone()],
+        sigma_typed_n_m: typed,
+        sigma_measured_n_m: r.excess_n_m - free_surfaces_n_m[0] - free_surfaces_n_m[1],
+        sigma_standard_error_n_m: r.excess_standard_error_n_m,
+        particles: r.particles,
+        steps: r.steps,
+    })
+}
+
+/// The interfacial tension of liquids `a`, `b` of `scene` as its pair table has it:
+/// `σ_a + σ_b − 2σ_pair(a, b)` [N/m] (Eq. (18), Natsui 2021).
+fn typed_interfacial_tension(scene: &Scene, a: usize, b: usize) -> Result<f64, SimError> {
+    let m = crate::model::Model::from_scene(scene)?;
+    Ok(m.pairs.sigma(a, a) + m.pairs.sigma(b, b) - 2.0 * m.pairs.sigma(a, b))
+}
+
+/// What a relaxed slab gives.
+struct Relaxed {
+    /// The surfaces' excess of the virial's anisotropy per cross-section area, time-averaged
+    /// [N/m]: the sum of the tensions of every surface and interface of the slab.
+    excess_n_m: f64,
+    /// Its standard error [N/m].
+    excess_standard_error_n_m: f64,
+    particles: usize,
+    steps: u64,
+    /// Per liquid of the slab, the mean density of the middle third of its layer over `ρ0`.
+    bulk_density_ratio: Vec<f64>,
+}
+
+/// Relaxes a slab scene (periodic along x and y; layers along z) with its model changed by
+/// `adjust` and averages its surface excess ([`surface_excess`]) over the design's last
+/// crossings.
+fn relax(
+    slab: &Scene,
+    design: SlabDesign,
+    adjust: impl FnOnce(&mut crate::model::Model),
+) -> Result<Relaxed, SimError> {
+    let mut sim = Simulation::new(slab)?;
+    let before = sim.model.pairs.clone();
+    adjust(&mut sim.model);
+    if sim.model.pairs != before {
         with_kernel!(sim.model.kernel, K => sim.evaluate::<K>());
     }
     let end = slab.time.end;
@@ -146,7 +295,7 @@ pub fn slab_tension(
     let crossing = end / design.crossings;
     let tau = design.damping_crossings * crossing;
     let start = end - design.averaged_crossings * crossing;
-    // time-weighted means of the tension over 8 blocks of the averaged part
+    // time-weighted means of the excess over 8 blocks of the averaged part
     const BLOCKS: usize = 8;
     let mut block_sum = [0.0; BLOCKS];
     let mut block_time = [0.0; BLOCKS];
@@ -162,10 +311,11 @@ pub fn slab_tension(
                 &sim.particles,
                 &sim.search.lists
             ));
-            let sigma = surface_excess(&w, &sim.particles.pos[..w.len()]) / (2.0 * area);
+            let p = &sim.particles;
+            let excess = surface_excess(&w, &p.pos[..w.len()], &p.phase[..w.len()]) / area;
             let b =
                 (((sim.time_s - start) / (end - start) * BLOCKS as f64) as usize).min(BLOCKS - 1);
-            block_sum[b] += sigma * dt;
+            block_sum[b] += excess * dt;
             block_time[b] += dt;
         }
     }
@@ -177,57 +327,79 @@ pub fn slab_tension(
     let mean = means.iter().sum::<f64>() / n;
     let var = means.iter().map(|m| (m - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
     let p = &sim.particles;
-    let (lo, hi) = middle_third(&p.pos[..p.n_fluid]);
-    let middle: Vec<f64> = (0..p.n_fluid)
-        .filter(|&i| p.pos[i].z > lo && p.pos[i].z < hi)
-        .map(|i| p.rho[i])
+    let bulk_density_ratio = (0..slab.liquids.len())
+        .map(|a| {
+            let idx: Vec<usize> = (0..p.n_fluid)
+                .filter(|&i| p.phase[i] as usize == a)
+                .collect();
+            let (lo, hi) = middle_third(idx.iter().map(|&i| p.pos[i].z));
+            let middle: Vec<f64> = idx
+                .iter()
+                .filter(|&&i| p.pos[i].z > lo && p.pos[i].z < hi)
+                .map(|&i| p.rho[i])
+                .collect();
+            middle.iter().sum::<f64>() / middle.len().max(1) as f64 / sim.model.rho0[a]
+        })
         .collect();
-    let rho0 = sim.model.rho0[0];
-    Ok(SlabTension {
-        liquid: slab.liquids[0].name.clone(),
-        sigma_typed_n_m: slab.liquids[0].surface_tension.unwrap_or(0.0),
-        sigma_measured_n_m: mean,
-        sigma_standard_error_n_m: (var / n).sqrt(),
+    Ok(Relaxed {
+        excess_n_m: mean,
+        excess_standard_error_n_m: (var / n).sqrt(),
         particles: p.n_fluid,
         steps: sim.step,
-        bulk_density_ratio: middle.iter().sum::<f64>() / middle.len().max(1) as f64 / rho0,
+        bulk_density_ratio,
     })
 }
 
-/// `Σ_i (a_i − a_b)` [J] over the particles with virial shares `w` at positions `pos`:
-/// `a_i = w_zz − (w_xx + w_yy)/2`, `a_b` its mean over the middle third of the slab's extent
-/// along z.
-fn surface_excess(w: &[[f64; 9]], pos: &[crate::state::Vec3]) -> f64 {
+/// `Σ_i (a_i − a_b)` [J] over the particles with virial shares `w`, positions `pos` and
+/// phases `phase`: `a_i = w_zz − (w_xx + w_yy)/2`, `a_b` the mean of `a` over the middle third
+/// of particle `i`'s phase's extent along z (its layer's bulk).
+fn surface_excess(w: &[[f64; 9]], pos: &[crate::state::Vec3], phase: &[u8]) -> f64 {
     let aniso = |w: &[f64; 9]| w[8] - 0.5 * (w[0] + w[4]);
-    let (lo, hi) = middle_third(pos);
-    let (mut bulk, mut n_bulk, mut total) = (0.0, 0usize, 0.0);
-    for (w, x) in w.iter().zip(pos) {
-        let a = aniso(w);
-        total += a;
-        if x.z > lo && x.z < hi {
-            bulk += a;
-            n_bulk += 1;
+    let n_phases = phase.iter().map(|&p| p as usize + 1).max().unwrap_or(0);
+    let mut total = 0.0;
+    for a in 0..n_phases {
+        let mine = || (0..w.len()).filter(move |&i| phase[i] as usize == a);
+        let (lo, hi) = middle_third(mine().map(|i| pos[i].z));
+        let (mut sum, mut bulk, mut n_bulk, mut n) = (0.0, 0.0, 0usize, 0usize);
+        for i in mine() {
+            let v = aniso(&w[i]);
+            sum += v;
+            n += 1;
+            if pos[i].z > lo && pos[i].z < hi {
+                bulk += v;
+                n_bulk += 1;
+            }
         }
+        total += sum - n as f64 * bulk / n_bulk.max(1) as f64;
     }
-    total - w.len() as f64 * bulk / n_bulk.max(1) as f64
+    total
 }
 
-/// The bounds [m] of the middle third of the extent along z of the particles at `pos`.
-fn middle_third(pos: &[crate::state::Vec3]) -> (f64, f64) {
-    let (lo, hi) = pos
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-            (a.min(x.z), b.max(x.z))
-        });
+/// The bounds [m] of the middle third of the extent of the heights `z` [m].
+fn middle_third(z: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = z.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
+        (a.min(z), b.max(z))
+    });
     let third = (hi - lo) / 3.0;
     (lo + third, hi - third)
 }
 
-/// The factor of each liquid of `scene` (1 for a liquid without surface tension) that makes
-/// its relaxed slab's tension the typed `σ` within [`CALIBRATION_TOLERANCE`]
-/// ([`calibrate_liquid`]). Cached per scene and design for the life of the process.
-pub fn liquid_scales(scene: &Scene, design: SlabDesign) -> Result<Vec<f64>, SimError> {
-    static CACHE: Mutex<Vec<(String, Vec<f64>)>> = Mutex::new(Vec::new());
+/// The relaxed calibration's factors of a scene: per liquid, and per pair of liquids on top of
+/// `√(f_a f_b)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TensionScales {
+    /// Per liquid, the factor of its coefficients (1 for a liquid without surface tension).
+    pub liquids: Vec<f64>,
+    /// Per pair of liquids `(a, b, f)`, `a < b`, with a non-zero pair strength: the factor of
+    /// `C_ab` beyond `√(f_a f_b)` that gives the two-liquid slab the scene's `σ_ab`.
+    pub pairs: Vec<(usize, usize, f64)>,
+}
+
+/// The factors of `scene`'s liquids ([`calibrate_liquid`]) and then of its pairs of liquids
+/// ([`calibrate_pair`], with the liquids' factors applied). Cached per scene and design for the
+/// life of the process.
+pub fn tension_scales(scene: &Scene, design: SlabDesign) -> Result<TensionScales, SimError> {
+    static CACHE: Mutex<Vec<(String, TensionScales)>> = Mutex::new(Vec::new());
     let mut key_scene = scene.clone();
     // what the slabs do not depend on
     key_scene.bodies.clear();
@@ -239,15 +411,32 @@ pub fn liquid_scales(scene: &Scene, design: SlabDesign) -> Result<Vec<f64>, SimE
     if let Some((_, f)) = CACHE.lock().expect("cache").iter().find(|(k, _)| *k == key) {
         return Ok(f.clone());
     }
-    let mut scales = Vec::with_capacity(scene.liquids.len());
+    let n = scene.liquids.len();
+    let mut liquids = vec![1.0; n];
+    let mut surfaces = vec![0.0; n];
     for (a, l) in scene.liquids.iter().enumerate() {
         let sigma = l.surface_tension.unwrap_or(0.0);
-        if sigma <= 0.0 {
-            scales.push(1.0);
-            continue;
+        if sigma > 0.0 {
+            (liquids[a], surfaces[a]) = calibrate_liquid(scene, a, design, sigma)?;
         }
-        scales.push(calibrate_liquid(scene, a, design, sigma)?);
     }
+    let table = crate::model::Model::from_scene(scene)?.pairs;
+    let mut pairs = Vec::new();
+    for a in 0..n {
+        for b in a + 1..n {
+            if table.sigma(a, b) > 0.0 && surfaces[a] > 0.0 && surfaces[b] > 0.0 {
+                let f = calibrate_pair(
+                    scene,
+                    (a, b),
+                    design,
+                    [liquids[a], liquids[b]],
+                    [surfaces[a], surfaces[b]],
+                )?;
+                pairs.push((a, b, f));
+            }
+        }
+    }
+    let scales = TensionScales { liquids, pairs };
     CACHE.lock().expect("cache").push((key, scales.clone()));
     Ok(scales)
 }
@@ -266,27 +455,28 @@ const MAX_SLABS: usize = 5;
 /// bulk's compression, and the surface sums with it, follow `C`): from `f0 = 1` and
 /// `f1 = σ/σ_KB(1)` on, each step fits `σ_KB ∝ f^α` through the last two slabs and sets
 /// `f ← f (σ/σ_KB(f))^(1/α)` (a secant step in the logarithms). Refused, with the residual, if
-/// [`MAX_SLABS`] slabs do not get there.
+/// [`MAX_SLABS`] slabs do not get there. Returns the factor and the accepted slab's tension
+/// [N/m].
 pub fn calibrate_liquid(
     scene: &Scene,
     a: usize,
     design: SlabDesign,
     sigma: f64,
-) -> Result<f64, SimError> {
+) -> Result<(f64, f64), SimError> {
     // close enough: within the tolerance, or within twice the slab's own standard error (a
     // noisier slab cannot tell a closer factor apart)
     let close =
         |(s, se): (f64, f64)| (s - sigma).abs() < (CALIBRATION_TOLERANCE * sigma).max(2.0 * se);
     let first = positive_slab_tension(scene, a, design, 1.0)?;
     if close(first) {
-        return Ok(1.0);
+        return Ok((1.0, first.0));
     }
     let (mut f_prev, mut s_prev) = (1.0, first.0);
     let mut f = sigma / s_prev;
     for _ in 1..MAX_SLABS {
         let m = positive_slab_tension(scene, a, design, f)?;
         if close(m) {
-            return Ok(f);
+            return Ok((f, m.0));
         }
         let s = m.0;
         let alpha = if (f / f_prev - 1.0).abs() > 1e-6 {
@@ -305,6 +495,68 @@ pub fn calibrate_liquid(
              {MAX_SLABS} slabs (last: {s_prev:e} N/m at f = {f_prev}): use the lattice \
              calibration",
             scene.liquids[a].name,
+            CALIBRATION_TOLERANCE * 100.0
+        ),
+    )
+    .into())
+}
+
+/// The factor `g` of the coefficient `C_ab` (on top of `√(f_a f_b)`, the liquids' factors
+/// `liquid_scales` applied) whose two-liquid slab has the scene's interfacial tension within
+/// [`CALIBRATION_TOLERANCE`] of `σ_a + σ_b` (the scale of the sums it is the difference of:
+/// an interfacial tension much smaller than the surface tensions cannot be resolved more
+/// finely than theirs), or within twice the slab's standard error. `free_surfaces_n_m` are
+/// the liquids' slab tensions at their factors [N/m]. `σ_ab` falls as `C_ab` grows, about
+/// linearly: from `g0 = 1`, `g1` from the Fowkes form `σ_ab = σ_a + σ_b − g·(σ_a + σ_b −
+/// σ_ab(1))`, then secant steps. Refused, with the residual, after [`MAX_SLABS`] slabs.
+pub fn calibrate_pair(
+    scene: &Scene,
+    (a, b): (usize, usize),
+    design: SlabDesign,
+    liquid_scales: [f64; 2],
+    free_surfaces_n_m: [f64; 2],
+) -> Result<f64, SimError> {
+    let measure =
+        |g: f64| pair_slab_tension(scene, (a, b), design, liquid_scales, g, free_surfaces_n_m);
+    let first = measure(1.0)?;
+    let target = first.sigma_typed_n_m;
+    let sum = free_surfaces_n_m[0] + free_surfaces_n_m[1];
+    let close = |m: &PairSlabTension| {
+        (m.sigma_measured_n_m - target).abs()
+            < (CALIBRATION_TOLERANCE * sum).max(2.0 * m.sigma_standard_error_n_m)
+    };
+    if close(&first) {
+        return Ok(1.0);
+    }
+    let (mut g_prev, mut s_prev) = (1.0, first.sigma_measured_n_m);
+    let mut g = (sum - target) / (sum - s_prev);
+    for _ in 1..MAX_SLABS {
+        if !(g.is_finite() && g > 0.0) {
+            break;
+        }
+        let m = measure(g)?;
+        if close(&m) {
+            return Ok(g);
+        }
+        let s = m.sigma_measured_n_m;
+        let slope = (s - s_prev) / (g - g_prev);
+        (g_prev, s_prev) = (g, s);
+        g += if slope < 0.0 {
+            (target - s) / slope
+        } else {
+            // not falling: no secant; the Fowkes step from here
+            g * ((sum - target) / (sum - s) - 1.0)
+        };
+    }
+    Err(SceneError::invalid(
+        "discretisation.tension_calibration",
+        "relaxed_slab",
+        format!(
+            "the relaxed slab of {} under {} did not reach the interfacial tension {target} \
+             N/m within {} % of σ_a + σ_b in {MAX_SLABS} slabs (last: {s_prev:e} N/m at a \
+             pair factor {g_prev}): use the lattice calibration",
+            scene.liquids[a].name,
+            scene.liquids[b].name,
             CALIBRATION_TOLERANCE * 100.0
         ),
     )

@@ -109,10 +109,11 @@ impl Simulation {
         if scene.discretisation.tension_calibration == TensionCalibration::RelaxedSlab
             && model.effects.interfacial_tension
         {
-            model.scale_tension(&calibration::liquid_scales(
-                scene,
-                calibration::SlabDesign::default(),
-            )?);
+            let t = calibration::tension_scales(scene, calibration::SlabDesign::default())?;
+            model.scale_tension(&t.liquids);
+            for &(a, b, f) in &t.pairs {
+                model.scale_pair_tension(a, b, f);
+            }
         }
         let (particles, wall_no_slip, inventory) = build_particles(scene, &model)?;
         let mut search = NeighbourSearch::new(

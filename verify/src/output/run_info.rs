@@ -43,6 +43,10 @@ pub struct RunInfo {
     /// (`tension_calibration = "relaxed_slab"`; absent with the lattice calibration).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub tension_scales: Vec<f64>,
+    /// The relaxed-slab calibration's factor on each pair of liquids' coefficient beyond
+    /// `√(f_a f_b)`, `(liquid a, liquid b, factor)` (absent with the lattice calibration).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub pair_tension_scales: Vec<(String, String, f64)>,
     /// Particles per body `(name, count)`.
     pub bodies: Vec<(String, usize)>,
     /// Particles and layers per wall `(name, count, layers)`.
@@ -89,6 +93,12 @@ impl RunInfo {
             } else {
                 sim.model.tension_scales.clone()
             },
+            pair_tension_scales: (sim.model.pair_tension_scales.iter())
+                .map(|&(a, b, f)| {
+                    let name = |k: usize| sim.scene.liquids[k].name.clone();
+                    (name(a), name(b), f)
+                })
+                .collect(),
             bodies: sim.inventory.bodies.clone(),
             walls: sim.inventory.walls.clone(),
             steps: 0,

@@ -77,6 +77,13 @@ impl PairTable {
         }
     }
 
+    /// Scales the coefficient of the unlike pair `a`, `b` (both orders) by `f`.
+    pub fn scale_pair(&mut self, a: usize, b: usize, f: f64) {
+        assert_ne!(a, b, "an unlike pair");
+        self.coeff[a * self.n_phases + b] *= f;
+        self.coeff[b * self.n_phases + a] *= f;
+    }
+
     /// `C_ab` [N/m²].
     #[inline(always)]
     pub fn c(&self, a: usize, b: usize) -> f64 {

@@ -56,9 +56,9 @@ pub struct Model {
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
     pub tension_scales: Vec<f64>,
-    /// Per pair of liquids `(a, b, f)` with `a < b`: the factor the relaxed calibration put on
-    /// `C_ab` beyond `√(f_a f_b)` ([`Model::scale_pair_tension`]); empty with the lattice
-    /// calibration.
+    /// Per unlike pair of phases `(a, b, f)` with `a < b` (two liquids, or a liquid and a
+    /// solid): the factor the relaxed calibration put on `C_ab` beyond the liquids' own
+    /// ([`Model::scale_pair_tension`]); empty with the lattice calibration.
     pub pair_tension_scales: Vec<(usize, usize, f64)>,
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
     pub lattice_kernel_sum: f64,
@@ -232,12 +232,12 @@ impl Model {
         }
     }
 
-    /// Scales the coefficient of liquids `a` and `b` by `f` (on top of the liquids' own
-    /// factors) and records it.
+    /// Scales the coefficient of phases `a` and `b` (two liquids, or a liquid and a solid) by
+    /// `f` (on top of the liquids' own factors) and records it.
     pub fn scale_pair_tension(&mut self, a: usize, b: usize, f: f64) {
         assert!(
-            a < self.n_liquids && b < self.n_liquids,
-            "a pair of liquids"
+            a < self.n_liquids || b < self.n_liquids,
+            "a pair with a liquid"
         );
         self.pairs.scale_pair(a, b, f);
         let (a, b) = (a.min(b), a.max(b));

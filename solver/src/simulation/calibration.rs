@@ -22,8 +22,11 @@
 //! coefficients until its slab has the typed σ, then each pair of liquids' coefficient until a
 //! two-liquid slab (one layer on the other: two free surfaces and the interface) has the
 //! typed σ_ab ([`tension_scales`]); the factors are computed once per process for a given
-//! scene (cached in memory). Liquid–solid pairs take the liquid's factor: a wall's relaxed
-//! calibration is not built.
+//! scene (cached in memory). Then each liquid–solid pair's coefficient is scaled until the
+//! liquid's slab resting on a plate of the solid has the scene's work of adhesion
+//! `σ (1 + cos θ)`, counted as the liquid–wall pair energy per area at the gap and registry
+//! the relaxed liquid takes (the lattice calibration assumes the liquid's first layer one
+//! spacing above the wall's).
 
 use super::Simulation;
 use crate::error::SimError;
@@ -259,6 +262,118 @@ fn typed_interfacial_tension(scene: &Scene, a: usize, b: usize) -> Result<f64, S
     Ok(m.pairs.sigma(a, a) + m.pairs.sigma(b, b) - 2.0 * m.pairs.sigma(a, b))
 }
 
+/// The slab of liquid `liquid` resting on a plate of solid `solid` (index into
+/// `scene.solids`): a one-liquid slab whose lower face touches the plate's top at the lattice's
+/// spacing, the plate spanning the period (so the wall too repeats along x and y), laid as
+/// thick as the scene's walls are (the kernel support and `r_e`).
+pub fn wall_slab_scene(
+    scene: &Scene,
+    liquid: usize,
+    solid: usize,
+    design: SlabDesign,
+) -> Result<Scene, SceneError> {
+    let mut s = slab_scene(scene, liquid, design)?;
+    let sol = scene.solids.get(solid).ok_or_else(|| {
+        SceneError::invalid("solid", solid, "no solid of this index in the scene")
+    })?;
+    let (x, y) = (
+        s.periodic.x.unwrap_or_default(),
+        s.periodic.y.unwrap_or_default(),
+    );
+    s.description = format!(
+        "relaxed slab of {} on {} (tension calibration)",
+        scene.liquids[liquid].name, sol.name
+    );
+    s.solids = vec![sol.clone()];
+    s.walls = vec![crate::scene::Wall {
+        name: "plate".into(),
+        solid: sol.name.clone(),
+        shape: crate::scene::WallShape::Plate {
+            min: [x[0], y[0]],
+            max: [x[1], y[1]],
+            top: 0.0,
+        },
+        layers: None,
+        boundary: Default::default(),
+    }];
+    s.effects.wall_repulsion = scene.effects.wall_repulsion;
+    s.validate()?;
+    Ok(s)
+}
+
+/// The work of adhesion of a liquid on a solid as the relaxed particle liquid has it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WallAdhesion {
+    /// The liquid and the solid.
+    pub pair: [String; 2],
+    /// The work of adhesion the scene gives, `2σ_pair = σ (1 + cos θ)` [N/m].
+    pub typed_n_m: f64,
+    /// The relaxed slab's: its liquid–wall pair energy per area, `Σ C P(r) / A` [N/m].
+    pub measured_n_m: f64,
+    /// The standard error of the time average [N/m].
+    pub standard_error_n_m: f64,
+    /// Mean height of the liquid's first layer above the plate's top wall plane, over `l0`
+    /// [-] (the lattice calibration assumes 1), at the end.
+    pub first_layer_gap_over_l0: f64,
+    /// The slab's particles.
+    pub particles: usize,
+}
+
+/// Relaxes liquid `liquid`'s slab on solid `solid` with the liquid's coefficients scaled by
+/// `liquid_scale` and the liquid–solid coefficient by `pair_scale` on top, and measures the
+/// work of adhesion: the liquid–wall pair energy per cross-section. Like the lattice's
+/// calibration (the energy of the pairs across a plane), it counts the pairs' energy, now at
+/// the gap and registry the liquid really takes; the liquid's own restructuring between
+/// contact and separation is left out.
+pub fn wall_adhesion(
+    scene: &Scene,
+    (liquid, solid): (usize, usize),
+    design: SlabDesign,
+    liquid_scale: f64,
+    pair_scale: f64,
+) -> Result<WallAdhesion, SimError> {
+    let slab = wall_slab_scene(scene, liquid, solid, design)?;
+    let m0 = crate::model::Model::from_scene(&slab)?;
+    let typed = 2.0 * m0.pairs.sigma(0, 1);
+    let r = relax_measuring(
+        &slab,
+        design,
+        |m| {
+            m.scale_tension(&[liquid_scale]);
+            if pair_scale != 1.0 {
+                m.scale_pair_tension(0, 1, pair_scale);
+            }
+        },
+        |sim| {
+            let (m, p) = (&sim.model, &sim.particles);
+            let r_e = m.r_e_m;
+            let mut e = 0.0;
+            for i in 0..p.n_fluid {
+                let c = m.pairs.c(0, 1);
+                for &j in sim.search.lists.all(i) {
+                    let j = j as usize;
+                    if j < p.n_fluid {
+                        continue;
+                    }
+                    let r = sim.search.lists.delta(p.pos[i], p.pos[j]).norm();
+                    if r < r_e {
+                        e += c * m.potential.p(r); // Eq. (15), Natsui 2021 (its energy)
+                    }
+                }
+            }
+            e
+        },
+    )?;
+    Ok(WallAdhesion {
+        pair: [slab.liquids[0].name.clone(), slab.solids[0].name.clone()],
+        typed_n_m: typed,
+        measured_n_m: r.excess_n_m,
+        standard_error_n_m: r.excess_standard_error_n_m,
+        first_layer_gap_over_l0: r.first_layer_gap_over_l0,
+        particles: r.particles,
+    })
+}
+
 /// What a relaxed slab gives.
 struct Relaxed {
     /// The surfaces' excess of the virial's anisotropy per cross-section area, time-averaged
@@ -270,6 +385,9 @@ struct Relaxed {
     steps: u64,
     /// Per liquid of the slab, the mean density of the middle third of its layer over `ρ0`.
     bulk_density_ratio: Vec<f64>,
+    /// With a wall: the mean height of the liquid particles within 1.5 l0 of the top wall
+    /// plane above it, over `l0` [-]; NaN without.
+    first_layer_gap_over_l0: f64,
 }
 
 /// Relaxes a slab scene (periodic along x and y; layers along z) with its model changed by
@@ -279,6 +397,24 @@ fn relax(
     slab: &Scene,
     design: SlabDesign,
     adjust: impl FnOnce(&mut crate::model::Model),
+) -> Result<Relaxed, SimError> {
+    relax_measuring(slab, design, adjust, |sim| {
+        let w = with_kernel!(sim.model.kernel, K => particle_virials::<K>(
+            &sim.model,
+            &sim.particles,
+            &sim.search.lists
+        ));
+        let p = &sim.particles;
+        surface_excess(&w, &p.pos[..w.len()], &p.phase[..w.len()])
+    })
+}
+
+/// [`relax`] with another measurement: `measure` [J] over the cross-section, time-averaged.
+fn relax_measuring(
+    slab: &Scene,
+    design: SlabDesign,
+    adjust: impl FnOnce(&mut crate::model::Model),
+    measure: impl Fn(&Simulation) -> f64,
 ) -> Result<Relaxed, SimError> {
     let mut sim = Simulation::new(slab)?;
     let before = sim.model.pairs.clone();
@@ -306,13 +442,7 @@ fn relax(
             *v *= keep;
         }
         if sim.time_s > start {
-            let w = with_kernel!(sim.model.kernel, K => particle_virials::<K>(
-                &sim.model,
-                &sim.particles,
-                &sim.search.lists
-            ));
-            let p = &sim.particles;
-            let excess = surface_excess(&w, &p.pos[..w.len()], &p.phase[..w.len()]) / area;
+            let excess = measure(&sim) / area;
             let b =
                 (((sim.time_s - start) / (end - start) * BLOCKS as f64) as usize).min(BLOCKS - 1);
             block_sum[b] += excess * dt;
@@ -341,7 +471,23 @@ fn relax(
             middle.iter().sum::<f64>() / middle.len().max(1) as f64 / sim.model.rho0[a]
         })
         .collect();
+    let l0 = slab.discretisation.l0;
+    let wall_top = p.pos[p.n_fluid..]
+        .iter()
+        .map(|x| x.z)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let first: Vec<f64> = p.pos[..p.n_fluid]
+        .iter()
+        .map(|x| x.z - wall_top)
+        .filter(|&d| d < 1.5 * l0)
+        .collect();
+    let first_layer_gap_over_l0 = if first.is_empty() {
+        f64::NAN
+    } else {
+        first.iter().sum::<f64>() / first.len() as f64 / l0
+    };
     Ok(Relaxed {
+        first_layer_gap_over_l0,
         excess_n_m: mean,
         excess_standard_error_n_m: (var / n).sqrt(),
         particles: p.n_fluid,
@@ -390,13 +536,17 @@ fn middle_third(z: impl Iterator<Item = f64>) -> (f64, f64) {
 pub struct TensionScales {
     /// Per liquid, the factor of its coefficients (1 for a liquid without surface tension).
     pub liquids: Vec<f64>,
-    /// Per pair of liquids `(a, b, f)`, `a < b`, with a non-zero pair strength: the factor of
-    /// `C_ab` beyond `√(f_a f_b)` that gives the two-liquid slab the scene's `σ_ab`.
+    /// Per pair of phases `(a, b, f)`, `a < b`, with a non-zero pair strength: for two liquids
+    /// the factor of `C_ab` beyond `√(f_a f_b)` that gives the two-liquid slab the scene's
+    /// `σ_ab`; for a liquid `a` and a solid `b` (phase index: liquids first) used by a wall,
+    /// the factor beyond `f_a` that gives the liquid's slab on the solid the scene's work of
+    /// adhesion.
     pub pairs: Vec<(usize, usize, f64)>,
 }
 
-/// The factors of `scene`'s liquids ([`calibrate_liquid`]) and then of its pairs of liquids
-/// ([`calibrate_pair`], with the liquids' factors applied). Cached per scene and design for the
+/// The factors of `scene`'s liquids ([`calibrate_liquid`]), then of its pairs of liquids
+/// ([`calibrate_pair`]) and of its liquids on the solids of its walls ([`calibrate_wall`]),
+/// with the liquids' factors applied. Cached per scene and design for the
 /// life of the process.
 pub fn tension_scales(scene: &Scene, design: SlabDesign) -> Result<TensionScales, SimError> {
     static CACHE: Mutex<Vec<(String, TensionScales)>> = Mutex::new(Vec::new());
@@ -436,6 +586,18 @@ pub fn tension_scales(scene: &Scene, design: SlabDesign) -> Result<TensionScales
             }
         }
     }
+    for (sol_idx, sol) in scene.solids.iter().enumerate() {
+        if !scene.walls.iter().any(|w| w.solid == sol.name) {
+            continue; // no wall of it: nothing touches it
+        }
+        let phase = n + sol_idx;
+        for a in 0..n {
+            if table.sigma(a, phase) > 0.0 && surfaces[a] > 0.0 {
+                let f = calibrate_wall(scene, (a, sol_idx), design, liquids[a])?;
+                pairs.push((a, phase, f));
+            }
+        }
+    }
     let scales = TensionScales { liquids, pairs };
     CACHE.lock().expect("cache").push((key, scales.clone()));
     Ok(scales)
@@ -463,20 +625,47 @@ pub fn calibrate_liquid(
     design: SlabDesign,
     sigma: f64,
 ) -> Result<(f64, f64), SimError> {
-    // close enough: within the tolerance, or within twice the slab's own standard error (a
-    // noisier slab cannot tell a closer factor apart)
-    let close =
-        |(s, se): (f64, f64)| (s - sigma).abs() < (CALIBRATION_TOLERANCE * sigma).max(2.0 * se);
-    let first = positive_slab_tension(scene, a, design, 1.0)?;
+    let found = scale_in_logs(sigma, CALIBRATION_TOLERANCE * sigma, |f| {
+        positive_slab_tension(scene, a, design, f)
+    })?;
+    found.map_err(|(f, s)| {
+        SceneError::invalid(
+            "discretisation.tension_calibration",
+            "relaxed_slab",
+            format!(
+                "the relaxed slab of {} did not reach the typed σ = {sigma} N/m within {} % in \
+                 {MAX_SLABS} slabs (last: {s:e} N/m at f = {f}): use the lattice calibration",
+                scene.liquids[a].name,
+                CALIBRATION_TOLERANCE * 100.0
+            ),
+        )
+        .into()
+    })
+}
+
+/// The factor `f` at which `measure(f) = (value, standard error)` is `target` within
+/// `tolerance` or twice its standard error (a noisier measurement cannot tell a closer factor
+/// apart), for a positive measure growing with `f`: from `f0 = 1` and `f1 = target/value(1)`
+/// on, each step fits `value ∝ f^α` through the last two and sets `f ← f (target/value)^(1/α)`
+/// (a secant step in the logarithms). `Ok(Ok((f, value)))` when found; `Ok(Err((f, value)))`,
+/// the last tried, after [`MAX_SLABS`] measurements.
+#[allow(clippy::type_complexity)]
+fn scale_in_logs(
+    target: f64,
+    tolerance: f64,
+    mut measure: impl FnMut(f64) -> Result<(f64, f64), SimError>,
+) -> Result<Result<(f64, f64), (f64, f64)>, SimError> {
+    let close = |(s, se): (f64, f64)| (s - target).abs() < tolerance.max(2.0 * se);
+    let first = measure(1.0)?;
     if close(first) {
-        return Ok((1.0, first.0));
+        return Ok(Ok((1.0, first.0)));
     }
     let (mut f_prev, mut s_prev) = (1.0, first.0);
-    let mut f = sigma / s_prev;
+    let mut f = target / s_prev;
     for _ in 1..MAX_SLABS {
-        let m = positive_slab_tension(scene, a, design, f)?;
+        let m = measure(f)?;
         if close(m) {
-            return Ok((f, m.0));
+            return Ok(Ok((f, m.0)));
         }
         let s = m.0;
         let alpha = if (f / f_prev - 1.0).abs() > 1e-6 {
@@ -485,20 +674,57 @@ pub fn calibrate_liquid(
             1.0
         };
         (f_prev, s_prev) = (f, s);
-        f *= (sigma / s).powf(1.0 / alpha);
+        f *= (target / s).powf(1.0 / alpha);
     }
-    Err(SceneError::invalid(
-        "discretisation.tension_calibration",
-        "relaxed_slab",
-        format!(
-            "the relaxed slab of {} did not reach the typed σ = {sigma} N/m within {} % in \
-             {MAX_SLABS} slabs (last: {s_prev:e} N/m at f = {f_prev}): use the lattice \
-             calibration",
-            scene.liquids[a].name,
-            CALIBRATION_TOLERANCE * 100.0
-        ),
-    )
-    .into())
+    Ok(Err((f_prev, s_prev)))
+}
+
+/// The factor of the coefficient of liquid `liquid` on solid `solid` (on top of the liquid's
+/// factor `liquid_scale`) whose slab on a plate of the solid has the scene's work of adhesion
+/// `σ (1 + cos θ)` within [`CALIBRATION_TOLERANCE`] of it ([`wall_adhesion`]; the same secant
+/// steps as [`calibrate_liquid`]). Refused, with the residual, after [`MAX_SLABS`] slabs.
+pub fn calibrate_wall(
+    scene: &Scene,
+    (liquid, solid): (usize, usize),
+    design: SlabDesign,
+    liquid_scale: f64,
+) -> Result<f64, SimError> {
+    let first = wall_adhesion(scene, (liquid, solid), design, liquid_scale, 1.0)?;
+    let target = first.typed_n_m;
+    let mut cached = Some(first);
+    let found = scale_in_logs(target, CALIBRATION_TOLERANCE * target, |f| {
+        let m = match cached.take() {
+            Some(m) if f == 1.0 => m,
+            _ => wall_adhesion(scene, (liquid, solid), design, liquid_scale, f)?,
+        };
+        if !(m.measured_n_m > 0.0) {
+            return Err(SceneError::invalid(
+                "discretisation.tension_calibration",
+                "relaxed_slab",
+                format!(
+                    "the relaxed slab of {} on {} has no adhesion ({:e} N/m)",
+                    m.pair[0], m.pair[1], m.measured_n_m
+                ),
+            )
+            .into());
+        }
+        Ok((m.measured_n_m, m.standard_error_n_m))
+    })?;
+    found.map(|(f, _)| f).map_err(|(f, w)| {
+        SceneError::invalid(
+            "discretisation.tension_calibration",
+            "relaxed_slab",
+            format!(
+                "the relaxed slab of {} on {} did not reach the work of adhesion {target} N/m \
+                 within {} % in {MAX_SLABS} slabs (last: {w:e} N/m at f = {f}): use the \
+                 lattice calibration",
+                scene.liquids[liquid].name,
+                scene.solids[solid].name,
+                CALIBRATION_TOLERANCE * 100.0
+            ),
+        )
+        .into()
+    })
 }
 
 /// The factor `g` of the coefficient `C_ab` (on top of `√(f_a f_b)`, the liquids' factors

@@ -5,7 +5,8 @@ use solver::lattice::potential_virial_sum;
 use solver::observables::particle_virials;
 use solver::scene::TensionCalibration;
 use solver::simulation::calibration::{
-    pair_slab_tension, slab_tension, tension_scales, SlabDesign, CALIBRATION_TOLERANCE,
+    pair_slab_tension, slab_tension, tension_scales, wall_adhesion, SlabDesign,
+    CALIBRATION_TOLERANCE,
 };
 use solver::with_kernel;
 use solver::Simulation;
@@ -184,4 +185,50 @@ fn the_calibrated_two_liquid_slab_has_the_typed_interfacial_tension() {
         err.abs() < tol,
         "residual {err} N/m (g = {g}): {calibrated:?}"
     );
+}
+
+/// Matte on a solid where its contact angle is `theta_deg`, at the short cut-off, with a plate
+/// of it, as a scene to calibrate.
+fn matte_on_solid_scene(theta_deg: f64) -> solver::Scene {
+    let mut sc = scene(&block_scene(
+        10,
+        L0,
+        "interfacial_tension = true\nlaminar_viscosity = true\nartificial_viscosity = {}",
+        &format!(
+            r#"
+[[solid]]
+name = "glass"
+contact_angles = {{ matte = {theta_deg} }}
+[[wall]]
+name = "plate"
+solid = "glass"
+shape = {{ kind = "plate", min = [-1.0e-3, -1.0e-3], max = [1.0e-3, 1.0e-3], top = -6.0e-4 }}
+"#
+        ),
+    ));
+    sc.discretisation.re_over_l0 = 2.1;
+    sc
+}
+
+#[test]
+fn the_calibrated_wall_slab_has_the_typed_work_of_adhesion() {
+    for theta in [30.0, 120.0] {
+        let sc = matte_on_solid_scene(theta);
+        let design = SlabDesign::default();
+        let t = tension_scales(&sc, design).expect("scales");
+        assert_eq!(t.pairs.len(), 1, "{t:?}");
+        let (a, b, g) = t.pairs[0];
+        assert_eq!((a, b), (0, 1));
+        let lattice = wall_adhesion(&sc, (0, 0), design, t.liquids[0], 1.0).expect("slab");
+        let calibrated = wall_adhesion(&sc, (0, 0), design, t.liquids[0], g).expect("slab");
+        eprintln!(
+            "θ = {theta}: f_l {:?}, g {g}: lattice {lattice:?}; calibrated {calibrated:?}",
+            t.liquids
+        );
+        let err = calibrated.measured_n_m / calibrated.typed_n_m - 1.0;
+        assert!(
+            err.abs() < CALIBRATION_TOLERANCE,
+            "residual {err}: {calibrated:?}"
+        );
+    }
 }

@@ -43,8 +43,9 @@ pub struct RunInfo {
     /// (`tension_calibration = "relaxed_slab"`; absent with the lattice calibration).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub tension_scales: Vec<f64>,
-    /// The relaxed-slab calibration's factor on each pair of liquids' coefficient beyond
-    /// `√(f_a f_b)`, `(liquid a, liquid b, factor)` (absent with the lattice calibration).
+    /// The relaxed-slab calibration's factor on the coefficient of each pair of liquids
+    /// (beyond `√(f_a f_b)`) and of each liquid and solid (beyond `f_a`), `(phase a, phase b,
+    /// factor)` (absent with the lattice calibration).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub pair_tension_scales: Vec<(String, String, f64)>,
     /// Particles per body `(name, count)`.
@@ -95,7 +96,11 @@ impl RunInfo {
             },
             pair_tension_scales: (sim.model.pair_tension_scales.iter())
                 .map(|&(a, b, f)| {
-                    let name = |k: usize| sim.scene.liquids[k].name.clone();
+                    let nl = sim.scene.liquids.len();
+                    let name = |k: usize| match k < nl {
+                        true => sim.scene.liquids[k].name.clone(),
+                        false => sim.scene.solids[k - nl].name.clone(),
+                    };
                     (name(a), name(b), f)
                 })
                 .collect(),

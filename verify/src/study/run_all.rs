@@ -50,15 +50,22 @@ pub fn run_all(opts: &StudyOptions, exe: &Path) -> anyhow::Result<()> {
     }
     summary::write(out, &results, &opts.grid.variants())?;
     if !left_out.is_empty() {
-        let ids: Vec<String> = left_out.iter().map(|p| format!("`{}`", p.id())).collect();
+        // problems that share runs (the cube's period and damping) share their ids: once each
+        let mut ids: Vec<String> = Vec::new();
+        for p in &left_out {
+            let id = format!("`{}`", p.id());
+            if !ids.contains(&id) {
+                ids.push(id);
+            }
+        }
         let mut f = std::fs::OpenOptions::new()
             .append(true)
             .open(out.join("summary.md"))?;
         writeln!(
             f,
-            "\n**Left out of this run** (`--max-particles {}`): {} point(s) — {}.",
+            "\n**Left out of this run** (`--max-particles {}`): {} run(s) — {}.",
             opts.max_particles.unwrap_or(0),
-            left_out.len(),
+            ids.len(),
             ids.join(", ")
         )?;
     }

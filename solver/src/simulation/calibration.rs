@@ -697,7 +697,7 @@ pub fn calibrate_wall(
             Some(m) if f == 1.0 => m,
             _ => wall_adhesion(scene, (liquid, solid), design, liquid_scale, f)?,
         };
-        if !(m.measured_n_m > 0.0) {
+        if m.measured_n_m.is_nan() || m.measured_n_m <= 0.0 {
             return Err(SceneError::invalid(
                 "discretisation.tension_calibration",
                 "relaxed_slab",

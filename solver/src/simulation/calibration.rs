@@ -255,6 +255,12 @@ pub fn pair_slab_tension(
     })
 }
 
+/// `σ_a + σ_b` of liquids `a`, `b` of `scene` as typed [N/m].
+fn typed_surfaces(scene: &Scene, a: usize, b: usize) -> Result<f64, SimError> {
+    let m = crate::model::Model::from_scene(scene)?;
+    Ok(m.pairs.sigma(a, a) + m.pairs.sigma(b, b))
+}
+
 /// The interfacial tension of liquids `a`, `b` of `scene` as its pair table has it:
 /// `σ_a + σ_b − 2σ_pair(a, b)` [N/m] (Eq. (18), Natsui 2021).
 fn typed_interfacial_tension(scene: &Scene, a: usize, b: usize) -> Result<f64, SimError> {
@@ -284,6 +290,10 @@ pub fn wall_slab_scene(
         "relaxed slab of {} on {} (tension calibration)",
         scene.liquids[liquid].name, sol.name
     );
+    let mut sol = sol.clone();
+    // the slab has this one liquid
+    let name = &scene.liquids[liquid].name;
+    sol.contact_angles.retain(|l, _| l == name);
     s.solids = vec![sol.clone()];
     s.walls = vec![crate::scene::Wall {
         name: "plate".into(),
@@ -732,9 +742,10 @@ pub fn calibrate_wall(
 /// [`CALIBRATION_TOLERANCE`] of `σ_a + σ_b` (the scale of the sums it is the difference of:
 /// an interfacial tension much smaller than the surface tensions cannot be resolved more
 /// finely than theirs), or within twice the slab's standard error. `free_surfaces_n_m` are
-/// the liquids' slab tensions at their factors [N/m]. `σ_ab` falls as `C_ab` grows, about
-/// linearly: from `g0 = 1`, `g1` from the Fowkes form `σ_ab = σ_a + σ_b − g·(σ_a + σ_b −
-/// σ_ab(1))`, then secant steps. Refused, with the residual, after [`MAX_SLABS`] slabs.
+/// the liquids' slab tensions at their factors [N/m]. `σ_ab` falls as `C_ab` grows: from
+/// `g0 = 1`, the first step with the lattice's slope `dσ_ab/dg = −2σ_pair`, then secant steps
+/// (the lattice's slope again where a noisy slab gives no falling secant). Refused, with the
+/// residual, after [`MAX_SLABS`] slabs.
 pub fn calibrate_pair(
     scene: &Scene,
     (a, b): (usize, usize),
@@ -755,32 +766,33 @@ pub fn calibrate_pair(
         return Ok(1.0);
     }
     let (mut g_prev, mut s_prev) = (1.0, first.sigma_measured_n_m);
-    let mut g = (sum - target) / (sum - s_prev);
-    for _ in 1..MAX_SLABS {
+    // the first step from the lattice's slope: on the lattice σ_ab = σ_a + σ_b − 2σ_pair g, so
+    // dσ_ab/dg = −2σ_pair = −(σ_a + σ_b − σ_ab) of the typed values
+    let slope0 = -(typed_surfaces(scene, a, b)? - target);
+    let mut g = 1.0 + (target - s_prev) / slope0;
+    let mut slabs = 1;
+    while slabs < MAX_SLABS {
         if !(g.is_finite() && g > 0.0) {
-            break;
+            break; // no positive factor on this course
         }
         let m = measure(g)?;
+        slabs += 1;
         if close(&m) {
             return Ok(g);
         }
         let s = m.sigma_measured_n_m;
         let slope = (s - s_prev) / (g - g_prev);
         (g_prev, s_prev) = (g, s);
-        g += if slope < 0.0 {
-            (target - s) / slope
-        } else {
-            // not falling: no secant; the Fowkes step from here
-            g * ((sum - target) / (sum - s) - 1.0)
-        };
+        // not falling (a noisy slab): the lattice's slope instead of the secant
+        g += (target - s) / if slope < 0.0 { slope } else { slope0 };
     }
     Err(SceneError::invalid(
         "discretisation.tension_calibration",
         "relaxed_slab",
         format!(
             "the relaxed slab of {} under {} did not reach the interfacial tension {target} \
-             N/m within {} % of σ_a + σ_b in {MAX_SLABS} slabs (last: {s_prev:e} N/m at a \
-             pair factor {g_prev}): use the lattice calibration",
+             N/m within {} % of σ_a + σ_b in {slabs} slab(s) (last: {s_prev:e} N/m at a \
+             pair factor {g_prev}; next step {g}): use the lattice calibration",
             scene.liquids[a].name,
             scene.liquids[b].name,
             CALIBRATION_TOLERANCE * 100.0

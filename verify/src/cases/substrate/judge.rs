@@ -42,7 +42,7 @@ pub fn inside_plate_metric(case: &str, run: &RunData) -> Metric {
     )
     .run(run)
     .note(format!(
-        "{}setting {setting}; most at any output (centre below the top wall layer's centres) or in the final state",
+        "{}setting {setting}; most at any output or in the final state (deeper than l0/2 past every face of the plate, the wall-entry health check's rule)",
         run.status_note()
     ))
 }

@@ -78,16 +78,22 @@ impl Probe {
 pub fn probe(sim: &Simulation) -> Vec<(&'static str, f64)> {
     let dump = Dump::of(&sim.particles, sim.time_s);
     let cloud = dump.cloud(sim.model.l0_m);
-    let values = values(&cloud, &dump);
+    // the wall-entry health check's rule: deeper than half a spacing past every face of a
+    // wall's solid (a particle that went round the plate's rim and wets its underside is not
+    // inside it)
+    let half = 0.5 * sim.model.l0_m;
+    let inside = (0..dump.pos.len())
+        .filter(|&i| !dump.wall[i])
+        .filter(|&i| sim.model.walls.iter().any(|w| w.holds(dump.pos[i], half)))
+        .count();
+    let values = values(&cloud, &dump, inside);
     Probe::ALL.iter().map(|p| p.name()).zip(values).collect()
 }
 
 /// The probes in the order of [`Probe::ALL`]: height and wetted radius of the drop, its
 /// side-view angles (left, right, mean) and the 3-D sphere-fit angle, the centroid's x, the mean
-/// x velocity, and the number of liquid particles inside the plate (below its top layer's
-/// centres, z < −l0/2; the plate is wider than the drop's reach, so a particle there has passed
-/// between wall particles).
-fn values(cloud: &surface::Cloud, dump: &Dump) -> [f64; 9] {
+/// x velocity, and `inside`, the number of liquid particles inside the plate.
+fn values(cloud: &surface::Cloud, dump: &Dump, inside: usize) -> [f64; 9] {
     let contact = geometry::wall_contact(cloud, WALL_Z_M);
     let touching = contact.contact_radius_m > 0.0;
     // angles only once the drop touches the plate
@@ -106,10 +112,6 @@ fn values(cloud: &surface::Cloud, dump: &Dump) -> [f64; 9] {
     let n = fluid.len().max(1) as f64;
     let cx = fluid.iter().map(|&i| dump.pos[i][0]).sum::<f64>() / n;
     let vx = fluid.iter().map(|&i| dump.vel[i][0]).sum::<f64>() / n;
-    let inside = fluid
-        .iter()
-        .filter(|&&i| dump.pos[i][2] < WALL_Z_M - 0.5 * cloud.l0_m)
-        .count();
     [
         contact.height_m * 1e3,
         contact.contact_radius_m * 1e3,

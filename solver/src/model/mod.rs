@@ -63,7 +63,7 @@ pub struct Model {
     /// `Σ_j W_ij` over the bulk lattice, self included [1/m³].
     pub lattice_kernel_sum: f64,
     /// Own-phase kernel sum below which particle shifting treats a particle as at a boundary
-    /// of its phase [1/m³] ([`crate::physics::shifting::boundary_kernel_sum`]).
+    /// of its phase [1/m³] ([`crate::lattice::shifting_boundary_sum`]).
     pub boundary_kernel_sum: f64,
     /// Rest volume of a particle `m/ρ0` [m³].
     pub rest_volume_m3: f64,
@@ -111,7 +111,7 @@ impl Model {
         };
         let lattice_kernel_sum = with_kernel!(d.kernel, K => lattice::kernel_sum(&K::new(h), l0));
         let boundary_kernel_sum = with_kernel!(d.kernel, K => {
-            crate::physics::shifting::boundary_kernel_sum(&K::new(h), l0)
+            lattice::shifting_boundary_sum(&K::new(h), l0)
         });
         let surface_sum_m3 = lattice::potential_surface_sum(&potential);
         if surface_sum_m3 <= 0.0 {

@@ -12,7 +12,7 @@
 //! Near a boundary of its phase (a free surface, another liquid or a wall) a particle's
 //! concentration gradient is the boundary's, and moving down it would push the particle out
 //! of its phase. So a particle whose own-phase kernel sum `W(0) + Σ_{j same phase} W_ij` is
-//! below [`boundary_kernel_sum`] (halfway between the outer plane of a flat free surface of the
+//! below [`crate::lattice::shifting_boundary_sum`] (halfway between the outer plane of a flat free surface of the
 //! lattice and the plane below it), and every particle within one kernel support of such a
 //! particle, is shifted only along the boundary: `δr ← (I − n n) δr` with `n` the direction
 //! of its own-phase gradient `Σ_{j same phase} V_j ∇_i W_ij`.
@@ -21,20 +21,9 @@
 //! simplification; the summation density is recomputed at the new positions anyway).
 
 use crate::kernel::Kernel;
-use crate::lattice;
 use crate::neighbours::NeighbourLists;
 use crate::state::Vec3;
 use rayon::prelude::*;
-
-/// The own-phase kernel sum below which a particle is at a boundary of its phase [1/m³]:
-/// halfway between the sums of the outer (001) plane of a flat free surface of the lattice and
-/// of the plane below it. Relative to the bulk sum they are 0.72–0.91 and 0.96–1.00 for the
-/// four kernels at `h = 1.05…1.3 l0` (the outer plane's in-plane neighbours and `W(0)` hold
-/// most of the sum), so no single fraction suits every kernel.
-pub fn boundary_kernel_sum<K: Kernel>(kernel: &K, l0_m: f64) -> f64 {
-    0.5 * (lattice::half_space_kernel_sum(kernel, l0_m, 0)
-        + lattice::half_space_kernel_sum(kernel, l0_m, 1))
-}
 
 /// What the first pass finds per fluid particle.
 #[derive(Clone, Copy)]
@@ -50,7 +39,7 @@ struct Gradients {
 /// The shifting displacement of every fluid particle [m], into `out` (length `n_fluid`):
 /// `δr_i = −scale_m2 ∇C_i`, tangential near a boundary of the particle's phase (module doc).
 /// `scale_m2 = A h U dt` [m²]. `vol` [m³] covers fluid and wall particles; `boundary_sum`
-/// [1/m³] is [`boundary_kernel_sum`].
+/// [1/m³] is [`crate::lattice::shifting_boundary_sum`].
 #[allow(clippy::too_many_arguments)]
 pub fn displacements<K: Kernel>(
     kernel: &K,
@@ -124,88 +113,4 @@ pub fn displacements<K: Kernel>(
             }
         };
     });
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::{QuinticSpline, WendlandC2};
-    use crate::neighbours::NeighbourSearch;
-
-    /// A slab of `n × n × layers` lattice sites of spacing `l0` [m], unit volume fractions.
-    fn slab(n: usize, layers: usize, l0: f64) -> Vec<Vec3> {
-        let mut pos = Vec::new();
-        for z in 0..layers {
-            for y in 0..n {
-                for x in 0..n {
-                    pos.push(Vec3::new(x as f64, y as f64, z as f64) * l0);
-                }
-            }
-        }
-        pos
-    }
-
-    fn shifts<K: Kernel>(
-        h_over_l0: f64,
-        pos: &[Vec3],
-        perturbed: Option<(usize, Vec3)>,
-    ) -> Vec<Vec3> {
-        let l0 = 1.0;
-        let k = K::new(h_over_l0 * l0);
-        let mut pos = pos.to_vec();
-        if let Some((i, d)) = perturbed {
-            pos[i] += d;
-        }
-        let boundary = boundary_kernel_sum(&k, l0);
-        let vol = vec![l0 * l0 * l0; pos.len()];
-        let phase = vec![0u8; pos.len()];
-        let mut search = NeighbourSearch::new(k.support_m(), k.support_m(), 0.1 * l0);
-        // the search wants positions sorted by cell; the shifts are returned in input order
-        let perm = search.sort_order(&pos).unwrap();
-        let sorted: Vec<Vec3> = perm.iter().map(|&i| pos[i as usize]).collect();
-        search.build(&sorted, sorted.len()).unwrap();
-        let mut out = vec![Vec3::zeros(); pos.len()];
-        displacements(
-            &k,
-            &sorted,
-            &vol,
-            &phase,
-            &search.lists,
-            boundary,
-            1.0,
-            &mut out,
-        );
-        let mut back = vec![Vec3::zeros(); pos.len()];
-        for (k, &i) in perm.iter().enumerate() {
-            back[i as usize] = out[k];
-        }
-        back
-    }
-
-    #[test]
-    fn a_slab_is_shifted_only_along_its_surfaces() {
-        let (n, layers) = (9, 9);
-        let pos = slab(n, layers, 1.0);
-        let idx = |x: usize, y: usize, z: usize| (z * n + y) * n + x;
-        // the top surface's centre particle, displaced sideways: pushed back towards its site,
-        // along the surface (the normal is the neighbourhood's; 10 % of the shift allows for
-        // the tilt the displaced particle gives its neighbours' gradients)
-        let top = idx(4, 4, layers - 1);
-        let out = shifts::<WendlandC2>(1.05, &pos, Some((top, Vec3::new(0.2, 0.0, 0.0))));
-        assert!(out[top].x < 0.0, "{:?}", out[top]);
-        assert!(out[top].z.abs() < 0.1 * out[top].x.abs(), "{:?}", out[top]);
-        // a displaced interior particle (4 planes deep: beyond one support of any surface
-        // particle) is pushed back towards its site in every direction
-        let mid = idx(4, 4, 4);
-        let out = shifts::<WendlandC2>(1.05, &pos, Some((mid, Vec3::new(0.1, 0.0, 0.1))));
-        assert!(out[mid].x < 0.0 && out[mid].z < 0.0, "{:?}", out[mid]);
-        // the undisturbed slab away from its side faces (4 sites from them, beyond the
-        // quintic spline's support of 3.15): no shift at any depth, to round-off — the
-        // surface planes' normal gradients are projected out
-        let out = shifts::<QuinticSpline>(1.05, &pos, None);
-        for z in 0..layers {
-            let d = out[idx(4, 4, z)];
-            assert!(d.norm() < 1e-12, "plane {z}: {d:?}");
-        }
-    }
 }

@@ -14,5 +14,6 @@ mod fuzz_scenes;
 mod lattice_energy;
 mod periodic;
 mod scene_errors;
+mod shifting;
 mod tension_calibration;
 mod walls;

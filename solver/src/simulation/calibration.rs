@@ -238,7 +238,7 @@ pub fn pair_slab_tension(
     free_surfaces_n_m: [f64; 2],
 ) -> Result<PairSlabTension, SimError> {
     let slab = pair_slab_scene(scene, a, b, design)?;
-    let typed = typed_interfacial_tension(&slab, 0, 1)?;
+    let typed = typed_pair(&slab, 0, 1)?.1;
     let r = relax(&slab, design, |m| {
         m.scale_tension(&liquid_scales);
         if pair_scale != 1.0 {
@@ -255,17 +255,12 @@ pub fn pair_slab_tension(
     })
 }
 
-/// `σ_a + σ_b` of liquids `a`, `b` of `scene` as typed [N/m].
-fn typed_surfaces(scene: &Scene, a: usize, b: usize) -> Result<f64, SimError> {
+/// The typed `σ_a + σ_b` and interfacial tension `σ_ab = σ_a + σ_b − 2σ_pair(a, b)` of liquids
+/// `a`, `b` of `scene` as its pair table has them [N/m] (Eq. (18), Natsui 2021).
+fn typed_pair(scene: &Scene, a: usize, b: usize) -> Result<(f64, f64), SimError> {
     let m = crate::model::Model::from_scene(scene)?;
-    Ok(m.pairs.sigma(a, a) + m.pairs.sigma(b, b))
-}
-
-/// The interfacial tension of liquids `a`, `b` of `scene` as its pair table has it:
-/// `σ_a + σ_b − 2σ_pair(a, b)` [N/m] (Eq. (18), Natsui 2021).
-fn typed_interfacial_tension(scene: &Scene, a: usize, b: usize) -> Result<f64, SimError> {
-    let m = crate::model::Model::from_scene(scene)?;
-    Ok(m.pairs.sigma(a, a) + m.pairs.sigma(b, b) - 2.0 * m.pairs.sigma(a, b))
+    let surfaces = m.pairs.sigma(a, a) + m.pairs.sigma(b, b);
+    Ok((surfaces, surfaces - 2.0 * m.pairs.sigma(a, b)))
 }
 
 /// The slab of liquid `liquid` resting on a plate of solid `solid` (index into
@@ -357,9 +352,9 @@ pub fn wall_adhesion(
         |sim| {
             let (m, p) = (&sim.model, &sim.particles);
             let r_e = m.r_e_m;
+            let c = m.pairs.c(0, 1);
             let mut e = 0.0;
             for i in 0..p.n_fluid {
-                let c = m.pairs.c(0, 1);
                 for &j in sim.search.lists.all(i) {
                     let j = j as usize;
                     if j < p.n_fluid {
@@ -768,7 +763,7 @@ pub fn calibrate_pair(
     let (mut g_prev, mut s_prev) = (1.0, first.sigma_measured_n_m);
     // the first step from the lattice's slope: on the lattice σ_ab = σ_a + σ_b − 2σ_pair g, so
     // dσ_ab/dg = −2σ_pair = −(σ_a + σ_b − σ_ab) of the typed values
-    let slope0 = -(typed_surfaces(scene, a, b)? - target);
+    let slope0 = -(typed_pair(scene, a, b)?.0 - target);
     let mut g = 1.0 + (target - s_prev) / slope0;
     let mut slabs = 1;
     while slabs < MAX_SLABS {

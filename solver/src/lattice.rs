@@ -1,5 +1,5 @@
 //! Sums over the undisturbed simple cubic lattice of spacing `l0`: the constants that calibrate
-//! the density summation (physics.md §1) and normalise the interparticle potential (§4).
+//! the density summation (docs/model.md §1) and normalise the interparticle potential (§4).
 
 use crate::kernel::Kernel;
 use crate::physics::surface_tension::Kondo2007Potential;
@@ -7,7 +7,7 @@ use crate::physics::surface_tension::Kondo2007Potential;
 /// `Σ_j W(|r_ij|)` over a bulk lattice, self included [1/m³].
 ///
 /// `l0³` times this is 1.0281 for Wendland C2 at `h = 1.05 l0`: a summation density with
-/// `m = ρ0 l0³` would start 2.8 % dense (physics.md §1), hence the calibration.
+/// `m = ρ0 l0³` would start 2.8 % dense (docs/model.md §1), hence the calibration.
 pub fn kernel_sum<K: Kernel>(kernel: &K, l0: f64) -> f64 {
     let n = (kernel.support_m() / l0).ceil() as i64 + 1;
     let mut sum = 0.0;
@@ -65,7 +65,7 @@ pub fn neighbour_count(radius_m: f64, l0: f64) -> usize {
     count
 }
 
-/// The potential's surface sum `S` [m³] (physics.md §4): split the bulk lattice by a plane
+/// The potential's surface sum `S` [m³] (docs/model.md §4): split the bulk lattice by a plane
 /// between two layers; `S = Σ_{i in one column below} Σ_{j above} P(r_ij)`.
 ///
 /// The energy of the two new surfaces is `2σA = C (A/l0²) S`, hence `C = 2σ l0²/S`.
@@ -140,7 +140,7 @@ mod tests {
     #[test]
     fn neighbour_counts_of_the_lattice() {
         // Shells of the simple cubic lattice: 6 at l0, 12 at √2 l0, 8 at √3 l0, 6 at 2 l0:
-        // 32 sites lie within 2.1 l0 (physics.md §4 quotes 32).
+        // 32 sites lie within 2.1 l0 (docs/model.md §4 quotes 32).
         assert_eq!(neighbour_count(2.1, 1.0), 6 + 12 + 8 + 6);
         assert_eq!(neighbour_count(1.01, 1.0), 6);
     }

@@ -3,8 +3,9 @@
 //! Tension comes from a pairwise interparticle potential (Kondo et al. 2007) whose strength
 //! between unlike phases follows the Fowkes hypothesis, as in Natsui et al., ISIJ Int. 56
 //! (2016) 1297 and Chem. Eng. Sci. 229 (2021) 116035: users give σ [N/m], σ_ab and contact
-//! angles, never tuned coefficients. The equations are those of `physics.md` (the papers'
-//! printed equations, corrected); every implementing line cites its equation.
+//! angles, never tuned coefficients. The equations are those of `docs/model.md` (the papers'
+//! printed equations, corrected, and the choices the code makes where the papers leave one
+//! open); every implementing line cites its equation.
 //!
 //! The key design decision: effects are declared by the scene, and each force term is a type
 //! ([`physics::forces::PairTerm`]) passed to one fused pair loop; a term the scene does not

@@ -1,4 +1,4 @@
-//! Time-step constraints of the active effects (physics.md §3).
+//! Time-step constraints of the active effects (docs/model.md §3).
 
 use serde::Serialize;
 

@@ -34,11 +34,12 @@ fn run(name: &str) -> (Vec<Metric>, PathBuf) {
     (metrics, out)
 }
 
-/// Two significant digits: runs are bitwise reproducible on one build, but the system libm's
-/// cos/pow may differ in the last bit between machines, and a last-bit difference grows over
-/// thousands of steps to a few parts in 1e3 of these observables. An angle below 1e-4° is a
-/// failed fit whose digits are noise.
-fn round2_unit(v: f64, unit: &str) -> String {
+/// Three significant digits: runs are bitwise reproducible for any build and thread count
+/// (`.cargo/config.toml`); only a different system libm (cos/pow) could change a last bit,
+/// which thousands of steps grow to parts in 1e3 — then a snapshot's third digit may move and
+/// the change is reviewed like any other. An angle below 1e-4° is a failed fit whose digits
+/// are noise.
+fn round3_unit(v: f64, unit: &str) -> String {
     if unit == "deg" && v.abs() < 1e-4 {
         return "0".into();
     }
@@ -50,9 +51,9 @@ fn round2_unit(v: f64, unit: &str) -> String {
     }
     let mag = v.abs().log10().floor() as i32;
     if !(-3..5).contains(&mag) {
-        return format!("{v:.1e}");
+        return format!("{v:.2e}");
     }
-    let scale = 10f64.powi(1 - mag);
+    let scale = 10f64.powi(2 - mag);
     format!("{}", (v * scale).round() / scale)
 }
 
@@ -70,7 +71,7 @@ fn summary(metrics: &[Metric]) -> String {
             let value = if m.name.contains("drift") {
                 "round-off".to_string()
             } else {
-                round2_unit(m.value, &m.unit)
+                round3_unit(m.value, &m.unit)
             };
             format!("{} = {value} {} [{pass}]", m.name, m.unit)
         })

@@ -137,7 +137,7 @@ impl Model {
         rho0.extend(scene.solids.iter().map(|_| mean_rho0));
         let mut mu: Vec<f64> = scene.liquids.iter().map(|l| l.viscosity).collect();
         mu.extend(scene.solids.iter().map(|_| 0.0));
-        // m = ρ0 l0³ (physical) or ρ0 / Σ_lattice W (physics.md §1); either way V0 = m/ρ0
+        // m = ρ0 l0³ (physical) or ρ0 / Σ_lattice W (docs/model.md §1); either way V0 = m/ρ0
         let rest_volume_m3 = match d.particle_mass {
             ParticleMass::Physical => l0 * l0 * l0,
             ParticleMass::Lattice => 1.0 / lattice_kernel_sum,
@@ -271,7 +271,7 @@ impl Model {
         let viscous = if self.effects.laminar_viscosity {
             (0..self.n_liquids)
                 .filter(|&a| self.mu[a] > 0.0)
-                .map(|a| f.viscous * self.rho0[a] * h * h / self.mu[a]) // physics.md §3
+                .map(|a| f.viscous * self.rho0[a] * h * h / self.mu[a]) // docs/model.md §3
                 .reduce(f64::min)
         } else {
             None
@@ -282,7 +282,7 @@ impl Model {
                     let sigma = (0..self.pairs.n_phases)
                         .map(|b| self.pairs.sigma(a, b))
                         .fold(0.0, f64::max);
-                    // physics.md §3: dt ≤ 0.25 √(ρ h³ / (2π σ))
+                    // docs/model.md §3: dt ≤ 0.25 √(ρ h³ / (2π σ))
                     f.capillary
                         * (self.rho0[a] * h * h * h / (2.0 * std::f64::consts::PI * sigma)).sqrt()
                 })

@@ -60,7 +60,7 @@ pub struct Observables {
     pub kinetic_energy_j: f64,
     /// Interfacial (potential) energy relative to the bulk liquids and the dry solids [J]:
     /// `Σ_i [½ C_aa B − ½ Σ_{j liquid} C_ij P(r_ij) − Σ_{w wall} C_iw P(r_iw)]`, `B` the bulk
-    /// lattice sum. On a lattice it equals σ times the free area (physics.md §4).
+    /// lattice sum. On a lattice it equals σ times the free area (docs/model.md §4).
     pub interfacial_energy_j: f64,
     /// Compression (EOS) energy of the liquid [J] ([`compression_energy`]).
     pub compression_energy_j: f64,

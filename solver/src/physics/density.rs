@@ -1,5 +1,5 @@
 //! Density: number-density summation, and the re-initialisation filters of the continuity
-//! density (physics.md §2).
+//! density (docs/model.md §2).
 
 use crate::kernel::Kernel;
 use crate::neighbours::{NeighbourLists, ACTIVE_BITS};
@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 /// Summation density of fluid particles:
 /// `ρ_i = ρ0_i (W(0) + Σ_j W_ij) / Σ_lattice W` (Eq. 6 of Natsui 2021 in number-density form,
-/// calibrated so that the undisturbed lattice has exactly `ρ0`, physics.md §1–2). Every
+/// calibrated so that the undisturbed lattice has exactly `ρ0`, docs/model.md §1–2). Every
 /// neighbour counts, whatever its phase (walls complete the support), so density jumps between
 /// phases are not smeared.
 ///

@@ -101,7 +101,7 @@ fn is_default<T: Default + PartialEq>(v: &T) -> bool {
 #[serde(deny_unknown_fields)]
 pub struct Health {
     /// Largest particle speed over the sound speed [-]. Default 1.0: a blow-up detector. Weak
-    /// compressibility assumes Mach ≲ 0.1 (physics.md §3), but single particles are thrown
+    /// compressibility assumes Mach ≲ 0.1 (docs/model.md §3), but single particles are thrown
     /// transiently to Mach 0.5 in violent relaxations that then recover (measured: the 27³ cube
     /// at r_e = 2.1 l0); a blow-up passes Mach 1 within a few steps.
     #[serde(default = "default_max_mach")]
@@ -165,12 +165,11 @@ pub struct Discretisation {
     #[serde(default = "default_h_over_l0")]
     pub h_over_l0: f64,
     /// Cut-off of the interparticle potential over spacing, `r_e/l0` [-]. Default 4.2 (4.0 with
-    /// `setting = "natsui2016"`), the
-    /// 2021 paper's formula read literally (physics.md §4 leaves 2.1 vs 4.2 open). Chosen by
-    /// measurement: at 2.1 the particle lattice has a shear modulus G44 of 2.0 σ/l0 (potential
-    /// and pressure term) — about 14 σ/R for a 12³ drop — and drops do not flow; at 4.2 it is
-    /// 0.126 σ/l0 (C′ = 0.047 σ/l0) and the cube drop oscillates within 6 % of Lamb's period
-    /// at 15³.
+    /// `setting = "natsui2016"`), the 2021 paper's formula read literally (the papers leave 2.1
+    /// vs 4.2 open, docs/model.md §4). Chosen by measurement: at 2.1 the particle lattice has a
+    /// shear modulus G44 of 2.0 σ/l0 (potential and pressure term) — about 14 σ/R for a 12³
+    /// drop — and drops do not flow; at 4.2 it is 0.126 σ/l0 (C′ = 0.047 σ/l0) and the cube drop
+    /// oscillates within 6 % of Lamb's period at 15³.
     #[serde(default = "default_re_over_l0")]
     pub re_over_l0: f64,
     /// Order `m` of the potential's zero at its cut-off, `P'(r) = (r − l0)(r − r_e)^m / l0^(m−1)`:
@@ -187,7 +186,7 @@ pub struct Discretisation {
     pub tension_calibration: TensionCalibration,
     /// Artificial speed of sound `c` [m/s], the same for all phases (Tait EOS, Eq. 14).
     pub sound_speed: f64,
-    /// Which mass a particle carries. Default `physical` (`ρ0 l0³`); `lattice` is physics.md
+    /// Which mass a particle carries. Default `physical` (`ρ0 l0³`); `lattice` is docs/model.md
     /// §1's calibrated `ρ0 / Σ_j W_ij`, lighter by the kernel's lattice-sum excess.
     #[serde(default)]
     pub particle_mass: ParticleMass,
@@ -218,7 +217,7 @@ pub enum TensionCalibration {
 #[serde(rename_all = "snake_case")]
 pub enum Setting {
     /// Natsui et al. 2021 (paper A): `h/l0 = 1.05` (§2.2), `r_e/l0 = 4.2` (Eq. 15's cut-off
-    /// read literally; physics.md §4).
+    /// read literally; docs/model.md §4).
     #[default]
     Natsui2021,
     /// Natsui et al. 2016 (paper B): its "effective radius" of 4.0 d is the kernel's support
@@ -226,7 +225,7 @@ pub enum Setting {
     /// cut-off: `h/l0 = 2.0` (support 2h = 4.0 l0), `r_e/l0 = 4.0`. Paper B's dimensionless
     /// potential (its Eq. 9, in q = r/h) has the same shape — repulsive below d, zero force at
     /// d and at the cut-off — and its energy coefficient is fixed here by the same lattice
-    /// normalisation `C = 2σ l0²/S` (physics.md §4, S/l0³ = 191.840 at 4.0), so only the two
+    /// normalisation `C = 2σ l0²/S` (docs/model.md §4, S/l0³ = 191.840 at 4.0), so only the two
     /// radii differ. Paper B does not name its kernel; the scene's kernel is used.
     Natsui2016,
 }
@@ -260,7 +259,7 @@ pub enum ParticleMass {
     /// `m = ρ0 l0³`: the body's mass and weight equal ρ0 times its lattice volume.
     #[default]
     Physical,
-    /// `m = ρ0 / Σ_j W_ij` over the bulk lattice (physics.md §1).
+    /// `m = ρ0 / Σ_j W_ij` over the bulk lattice (docs/model.md §1).
     Lattice,
 }
 
@@ -293,7 +292,7 @@ pub struct TimeControl {
     /// Fixed time step [s]. Omit for the adaptive step (minimum over the active constraints).
     #[serde(default)]
     pub dt: Option<f64>,
-    /// Safety factors of the time-step constraints (physics.md §3).
+    /// Safety factors of the time-step constraints (docs/model.md §3).
     #[serde(default)]
     pub factors: StepFactors,
     /// Largest number of steps the run may take; a scene needing more is refused before it
@@ -306,7 +305,7 @@ fn default_max_steps() -> u64 {
     10_000_000
 }
 
-/// Safety factors of the time-step constraints (physics.md §3).
+/// Safety factors of the time-step constraints (docs/model.md §3).
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct StepFactors {
@@ -420,7 +419,7 @@ pub struct DensityControl {
     /// What the EOS does with a density below ρ0: `clip` (default) sets the pressure to zero,
     /// `keep` uses Tait's negative pressure. Cohesion comes from the interparticle potential;
     /// tension from a deficient free-surface density would add an uncontrolled surface tension
-    /// (physics.md §2). Measured on the cube drop (15³, r_e = 4.2 l0): clipped, the kinetic
+    /// (docs/model.md §2). Measured on the cube drop (15³, r_e = 4.2 l0): clipped, the kinetic
     /// energy peaks at 0.25 µJ of the 0.47 µJ the cube-to-sphere change releases; kept, at
     /// 2 µJ, drawn from the spurious surface tension.
     #[serde(default)]

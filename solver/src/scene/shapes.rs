@@ -27,6 +27,16 @@ pub enum BodyShape {
         /// Upper corner [m].
         max: [f64; 3],
     },
+    /// Spherical shell `inner_radius ≤ |x − center| < outer_radius` (e.g. one liquid around a
+    /// sphere of another).
+    Shell {
+        /// Centre [m].
+        center: [f64; 3],
+        /// Inner radius [m].
+        inner_radius: f64,
+        /// Outer radius [m].
+        outer_radius: f64,
+    },
     /// Half ball: the flat face passes through `center`, the dome points along `pole`.
     Hemisphere {
         /// Centre of the flat face [m].
@@ -131,6 +141,11 @@ impl BodyShape {
                 center: c,
                 radius: r,
                 ..
+            }
+            | BodyShape::Shell {
+                center: c,
+                outer_radius: r,
+                ..
             } => (
                 [c[0] - r, c[1] - r, c[2] - r],
                 [c[0] + r, c[1] + r, c[2] + r],
@@ -158,6 +173,14 @@ impl BodyShape {
                 (0..3).map(|k| (d[k] / semi_axes[k]).powi(2)).sum::<f64>() < 1.0
             }
             BodyShape::Box { min, max } => (0..3).all(|k| p[k] >= min[k] && p[k] < max[k]),
+            BodyShape::Shell {
+                center,
+                inner_radius,
+                outer_radius,
+            } => {
+                let d2 = dot(sub(p, center), sub(p, center));
+                d2 >= inner_radius * inner_radius && d2 < outer_radius * outer_radius
+            }
             BodyShape::Hemisphere {
                 center,
                 radius,
@@ -195,6 +218,23 @@ impl BodyShape {
                     "max",
                     format!("{max:?}"),
                     finite3(max) && (0..3).all(|k| max[k] > min[k]),
+                ),
+            ],
+            BodyShape::Shell {
+                center,
+                inner_radius,
+                outer_radius,
+            } => vec![
+                ("center", format!("{center:?}"), finite3(center)),
+                (
+                    "inner_radius",
+                    format!("{inner_radius}"),
+                    inner_radius.is_finite() && inner_radius > 0.0,
+                ),
+                (
+                    "outer_radius",
+                    format!("{outer_radius}"),
+                    outer_radius.is_finite() && outer_radius > inner_radius,
                 ),
             ],
             BodyShape::Hemisphere {
@@ -379,5 +419,40 @@ impl WallShape {
                 ),
             ],
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_shell_holds_what_lies_between_its_radii() {
+        let shell = BodyShape::Shell {
+            center: [1.0, 0.0, 0.0],
+            inner_radius: 1.0,
+            outer_radius: 2.0,
+        };
+        // on the inner sphere: in (a core sphere of the inner radius excludes it); the outer: out
+        assert!(shell.contains([2.0, 0.0, 0.0]));
+        assert!(shell.contains([1.0, 1.5, 0.0]));
+        assert!(!shell.contains([1.0, 0.0, 0.5]));
+        assert!(!shell.contains([3.0, 0.0, 0.0]));
+        let core = BodyShape::Sphere {
+            center: [1.0, 0.0, 0.0],
+            radius: 1.0,
+        };
+        assert!(!core.contains([2.0, 0.0, 0.0]));
+        assert_eq!(shell.bounds(), ([-1.0, -2.0, -2.0], [3.0, 2.0, 2.0]));
+        assert!(shell.checks().iter().all(|c| c.2));
+        let inverted = BodyShape::Shell {
+            center: [0.0; 3],
+            inner_radius: 2.0,
+            outer_radius: 1.0,
+        };
+        assert!(inverted
+            .checks()
+            .iter()
+            .any(|c| c.0 == "outer_radius" && !c.2));
     }
 }

@@ -44,7 +44,7 @@ impl Simulation {
             .zip(p.rho[..nf].par_iter().zip(p.phase[..nf].par_iter()))
             .for_each(|((pr, v), (&r, &ph))| {
                 let p = eos.pressure(r, m.rho0[ph as usize]);
-                // physics.md §2: tension from a deficient density would act as an extra,
+                // docs/model.md §2: tension from a deficient density would act as an extra,
                 // uncontrolled surface tension; the potential alone carries cohesion
                 *pr = if clip { p.max(0.0) } else { p };
                 *v = m.mass[ph as usize] / r;

@@ -1,7 +1,7 @@
 //! The time step: kick–drift–kick with an adaptive step.
 //!
 //! One step, from `(x_n, v_n, ρ_n, a_n)`:
-//! 1. choose `dt` (fixed, or the minimum over the active constraints, physics.md §3);
+//! 1. choose `dt` (fixed, or the minimum over the active constraints, docs/model.md §3);
 //! 2. kick and drift: `v ← v + ½dt a`, `x ← x + dt v` (continuity: `ρ ← ρ + dt dρ/dt`, a
 //!    predictor);
 //! 3. rebuild the neighbour lists if a particle moved half the skin (re-sorting by cell);

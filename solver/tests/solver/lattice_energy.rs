@@ -1,4 +1,4 @@
-//! Exact lattice identities of the pairwise potential (physics.md §4): with `C_ij = 2σ_pair
+//! Exact lattice identities of the pairwise potential (docs/model.md §4): with `C_ij = 2σ_pair
 //! l0²/S`, cutting a periodic slab of the reference lattice costs `σ` per unit area of each new
 //! surface; an a|b interface costs `σ_ab`; separating a liquid from a solid costs the work of
 //! adhesion `σ(1 + cos θ)` (Young–Dupré). These hold to round-off for any cut-off `r_e`.

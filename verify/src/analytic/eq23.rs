@@ -3,8 +3,8 @@
 //!
 //! Source: Natsui et al., Chem. Eng. Sci. 229 (2021) 116035 ("paper A"), §2.4,
 //! Eqs. (19)–(23), Fig. 3 and §4. The printed text is damaged by OCR;
-//! `shared/physics.md` §5 and R8–R10 are authoritative. Departures from the
-//! printed paper (physics.md, Corrections): Eq. (23) follows from Eqs. (19),
+//! `docs/model.md` §5 and R8–R10 state the model. Departures from the
+//! printed paper (docs/model.md C7, C8): Eq. (23) follows from Eqs. (19),
 //! (21), (22), not "(19), (20), (21)"; Fig. 3's "σ3 = 0.1 N/m" is σ12 = 0.1 N/m
 //! and its "eq. 26" is Eq. (23).
 //!
@@ -26,7 +26,7 @@
 //!
 //! Boundary values: `|cos θ12| ≤ 1 + 1e-12` counts as a triple line (θ12 then
 //! clamped to 0° or 180°), so that exact boundary cases written in degrees
-//! (physics.md R9: θ23 = 60° → 180°, 120° → 0°) are not lost to the rounding
+//! (docs/model.md R9: θ23 = 60° → 180°, 120° → 0°) are not lost to the rounding
 //! of `cos` (~1e-16, amplified by σ/σ12). A band of 1e-12 on cos θ12 is
 //! 8e-5° at θ12 = 0°, far below any measurable angle.
 
@@ -34,11 +34,11 @@
 const COS_BAND: f64 = 1e-12;
 
 /// Tensions (σ1, σ2, σ12) in N/m of paper A's Fig. 3(a): identical matte
-/// liquids (σ1 = σ2 = 0.4, σ12 = 0.1; physics.md R10).
+/// liquids (σ1 = σ2 = 0.4, σ12 = 0.1; docs/model.md R10).
 pub const FIG3A_TENSIONS_N_PER_M: (f64, f64, f64) = (0.4, 0.4, 0.1);
 
 /// Tensions (σ1, σ2, σ12) in N/m of paper A's Fig. 3(b): matte (1) and slag
-/// (2) (σ1 = 0.4, σ2 = 0.2, σ12 = 0.1; physics.md R9).
+/// (2) (σ1 = 0.4, σ2 = 0.2, σ12 = 0.1; docs/model.md R9).
 pub const FIG3B_TENSIONS_N_PER_M: (f64, f64, f64) = (0.4, 0.2, 0.1);
 
 /// How two liquids on a solid meet it, from Eq. (23), Natsui 2021.
@@ -100,7 +100,7 @@ fn check_angle(name: &str, deg: f64) -> Result<(), String> {
     }
 }
 
-/// Right-hand side of Eq. (23), Natsui 2021 (physics.md §5):
+/// Right-hand side of Eq. (23), Natsui 2021 (docs/model.md §5):
 /// `cos θ12 = (σ1 cos θ31 − σ2 cos θ23) / σ12` (dimensionless; may lie outside
 /// [−1, 1], which means no triple line — see [`solid_contact`]).
 ///
@@ -161,6 +161,39 @@ pub fn solid_contact(
         }
     };
     Ok(contact)
+}
+
+/// How θ12 of a triple line moves with the Young angles: `(∂θ12/∂θ31, ∂θ12/∂θ23)`
+/// (dimensionless, deg per deg), from differentiating Eq. (23), Natsui 2021:
+/// `∂θ12/∂θ31 = σ1 sin θ31 / (σ12 sin θ12)`, `∂θ12/∂θ23 = −σ2 sin θ23 / (σ12 sin θ12)`.
+/// An error in a measured Young angle reaches θ12 multiplied by these. `Err` where Eq. (23)
+/// has no line or the line is at θ12 = 0° or 180° (infinite sensitivity), or for invalid
+/// input.
+pub fn theta12_sensitivity(
+    sigma1_n_per_m: f64,
+    sigma2_n_per_m: f64,
+    sigma12_n_per_m: f64,
+    theta31_deg: f64,
+    theta23_deg: f64,
+) -> Result<(f64, f64), String> {
+    let contact = solid_contact(
+        sigma1_n_per_m,
+        sigma2_n_per_m,
+        sigma12_n_per_m,
+        theta31_deg,
+        theta23_deg,
+    )?;
+    let SolidContact::TripleLine { theta12_deg } = contact else {
+        return Err("no solid/liquid/liquid line: θ12 has no sensitivity".into());
+    };
+    let s12 = theta12_deg.to_radians().sin();
+    if s12 < 1e-9 {
+        return Err(format!("θ12 = {theta12_deg}°: the sensitivity is infinite"));
+    }
+    Ok((
+        sigma1_n_per_m * theta31_deg.to_radians().sin() / (sigma12_n_per_m * s12),
+        -sigma2_n_per_m * theta23_deg.to_radians().sin() / (sigma12_n_per_m * s12),
+    ))
 }
 
 /// Interval `(θ23_min, θ23_max)` in degrees of liquid 2's Young angle for which
@@ -229,7 +262,7 @@ mod tests {
         solid_contact(s.0, s.1, s.2, t31, t23).unwrap()
     }
 
-    /// Reference: physics.md R9 — Fig. 3(b) (σ1 0.4, σ2 0.2, σ12 0.1 N/m) at
+    /// Reference: docs/model.md R9 — Fig. 3(b) (σ1 0.4, σ2 0.2, σ12 0.1 N/m) at
     /// θ31 = 90°: θ23 60 → 180°, 75 → 121.17°, 90 → 90°, 105 → 58.83°,
     /// 120 → 0°, the ends being exact boundary cases (cos θ12 = ∓1) that must
     /// count as triple lines. Tolerance 0.005°: R9 gives 2 decimals; 1e-5° for
@@ -260,7 +293,7 @@ mod tests {
         assert!((theta12(s, 90.0, 90.0).theta12_deg() - 90.0).abs() < 1e-9);
     }
 
-    /// Reference: physics.md R9/R10 — the triple-line interval at θ31 = 90°:
+    /// Reference: docs/model.md R9/R10 — the triple-line interval at θ31 = 90°:
     /// 75.52° ≤ θ23 ≤ 104.48° for identical matte liquids (Fig. 3(a)) and
     /// 60° … 120° for matte/slag (Fig. 3(b)). Tolerance 0.005°: 2 decimals.
     #[test]
@@ -281,7 +314,7 @@ mod tests {
         );
     }
 
-    /// Reference: physics.md R8 — water (1) / silicone oil (2) on Teflon
+    /// Reference: docs/model.md R8 — water (1) / silicone oil (2) on Teflon
     /// (paper A Appendix): σ 72.8 / 20.1 / 52 mN/m, θ31 = 108.9°, θ23 = 16.4°
     /// → θ12 = 145.52°. Tolerance 0.005°: 2 decimals.
     #[test]
@@ -467,5 +500,22 @@ mod tests {
         assert!(theta12_map(0.4, 0.2, 0.1, &[90.0], &[90.0, f64::INFINITY]).is_err());
         assert!(cos_theta12(0.4, 0.2, 0.0, 90.0, 90.0).is_nan());
         assert!(cos_theta12(0.4, 0.2, 0.1, f64::NAN, 90.0).is_nan());
+    }
+
+    #[test]
+    fn sensitivity_matches_finite_differences() {
+        // matte–slag at θ31 = 90°, θ23 = 75° (θ12 = 121.2°) and identical liquids at 60°/68°
+        for (s1, s2, th31, th23) in [(0.4, 0.2, 90.0, 75.0), (0.4, 0.4, 60.0, 68.0)] {
+            let (d31, d23) = theta12_sensitivity(s1, s2, 0.1, th31, th23).unwrap();
+            let at = |a: f64, b: f64| solid_contact(s1, s2, 0.1, a, b).unwrap().theta12_deg();
+            let h = 1e-4;
+            let f31 = (at(th31 + h, th23) - at(th31 - h, th23)) / (2.0 * h);
+            let f23 = (at(th31, th23 + h) - at(th31, th23 - h)) / (2.0 * h);
+            // central differences of a smooth function: error O(h²) ≈ 1e-8 relative
+            assert!((d31 - f31).abs() < 1e-6 * f31.abs().max(1.0), "{d31} {f31}");
+            assert!((d23 - f23).abs() < 1e-6 * f23.abs().max(1.0), "{d23} {f23}");
+        }
+        // no line (identical liquids, θ31 = 90°, θ23 = 30°): refused
+        assert!(theta12_sensitivity(0.4, 0.4, 0.1, 90.0, 30.0).is_err());
     }
 }

@@ -19,7 +19,7 @@
 //!
 //! A cube of side `a` relaxing to a sphere excites `l = 4`, the lowest mode with cubic symmetry;
 //! its equilibrium radius is that of the sphere of equal volume, `R = (3 a³ / (4π))^{1/3}`
-//! (physics.md §6, the Appendix of Natsui et al. 2021).
+//! (docs/model.md §6, the Appendix of Natsui et al. 2021).
 //!
 //! # Assumptions
 //!
@@ -124,7 +124,7 @@ pub fn cube_equivalent_radius(side_m: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// Matte of the cube test (physics.md §8 case conditions, Appendix): density \[kg/m³\].
+    /// Matte of the cube test (docs/model.md §8 case conditions, Appendix): density \[kg/m³\].
     const MATTE_DENSITY_KG_M3: f64 = 4500.0;
     /// Matte surface tension \[N/m\].
     const MATTE_SIGMA_N_PER_M: f64 = 0.40;
@@ -138,11 +138,11 @@ mod tests {
         (a - b).abs() / b.abs()
     }
 
-    /// The 1 mm cube has the volume of a sphere of radius 0.62035 mm (physics.md R5 inputs).
+    /// The 1 mm cube has the volume of a sphere of radius 0.62035 mm (docs/model.md R5 inputs).
     #[test]
     fn cube_equivalent_radius_matches_r5_input() {
         let radius_m = cube_equivalent_radius(CUBE_SIDE_M);
-        // physics.md R5 prints 0.62035 mm (5 digits): half a unit in the last digit is 5e-9 m.
+        // docs/model.md R5 prints 0.62035 mm (5 digits): half a unit in the last digit is 5e-9 m.
         assert!((radius_m - 0.62035e-3).abs() <= 0.5e-8, "R = {radius_m}");
         // Independent check, volume conservation: (4/3)πR³ = a³. Only round-off (cbrt, powi:
         // a few ulp), so 1e-14 relative is generous.
@@ -150,7 +150,7 @@ mod tests {
         assert!(rel_diff(sphere_volume_m3, CUBE_SIDE_M.powi(3)) < 1e-14);
     }
 
-    /// physics.md R5/R6: the 1 mm matte cube relaxes with T_4 ≈ 1.2137 ms and γ_4 ≈ 48.79 1/s.
+    /// docs/model.md R5/R6: the 1 mm matte cube relaxes with T_4 ≈ 1.2137 ms and γ_4 ≈ 48.79 1/s.
     ///
     /// R5/R6 were evaluated with R rounded to 0.6204 mm (see the next test), while the exact
     /// equivalent radius is 0.620350 mm; this shifts T_4 by +1.2e-4 and γ_4 by −1.6e-4 relative.
@@ -178,7 +178,7 @@ mod tests {
         let period_s = lamb_period(4, MATTE_SIGMA_N_PER_M, MATTE_DENSITY_KG_M3, radius_m);
         let nu_m2_s = MATTE_VISCOSITY_PA_S / MATTE_DENSITY_KG_M3;
         let gamma_per_s = lamb_damping_rate(4, nu_m2_s, radius_m);
-        // Half a unit in the last printed digit of physics.md R5 (1.2137 ms) and R6 (48.79 1/s).
+        // Half a unit in the last printed digit of docs/model.md R5 (1.2137 ms) and R6 (48.79 1/s).
         assert!((period_s - 1.2137e-3).abs() <= 0.5e-7, "T4 = {period_s}");
         assert!(
             (gamma_per_s - 48.79).abs() <= 0.005,
@@ -186,7 +186,7 @@ mod tests {
         );
     }
 
-    /// For l = 4, l(l−1)(l+2) = 72, so T_4 = 2π √(ρR³/(72σ)) (physics.md "Corrections", Appendix).
+    /// For l = 4, l(l−1)(l+2) = 72, so T_4 = 2π √(ρR³/(72σ)) (docs/model.md C10).
     #[test]
     fn l4_period_identity() {
         for &(sigma, rho, radius) in &[

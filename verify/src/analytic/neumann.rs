@@ -3,7 +3,7 @@
 //!
 //! Source: Natsui et al., Chem. Eng. Sci. 229 (2021) 116035 ("paper A"), §3,
 //! Eqs. (24)–(27) and Fig. 12. The printed equations are damaged by OCR;
-//! `shared/physics.md` §5 and §8 (R13, R15, R16) is the authoritative text and
+//! `docs/model.md` §5 and §8 (R13, R15, R16) is the authoritative text and
 //! is what this module implements.
 //!
 //! # Regimes (Eq. 24)
@@ -23,7 +23,7 @@
 //!
 //! Frame: meridian half-plane `(r, z)`, `r ≥ 0` the distance from the symmetry
 //! axis (m), `z` along the axis (m), pointing from liquid 1 to liquid 2 (liquid
-//! 1 on −z, as in physics.md §5). Origin: centre of the triple-line circle, so
+//! 1 on −z, as in docs/model.md §5). Origin: centre of the triple-line circle, so
 //! the line is at `z = 0, r = a`.
 //!
 //! Each cap spans the disc `r ≤ a, z = 0` and crosses the axis at its apex, at
@@ -72,7 +72,7 @@ use std::f64::consts::PI;
 /// tensions typed in decimal (e.g. 0.4 − 0.2 vs 0.2): 1e-12 is ~4500 ulp.
 const BOUNDARY_REL_TOL: f64 = 1e-12;
 
-/// Equilibrium topology of two liquids in contact in a gas (physics.md §5,
+/// Equilibrium topology of two liquids in contact in a gas (docs/model.md §5,
 /// Eq. (24), Natsui 2021).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Regime {
@@ -108,7 +108,7 @@ fn check_tension(name: &str, value_n_per_m: f64, allow_zero: bool) -> Result<(),
 }
 
 /// Classifies the equilibrium topology of liquid 1 and liquid 2 in a gas from
-/// the Neumann triangle inequalities, Eq. (24), Natsui 2021 (physics.md §5).
+/// the Neumann triangle inequalities, Eq. (24), Natsui 2021 (docs/model.md §5).
 ///
 /// Inputs are the surface tensions `sigma1_n_per_m`, `sigma2_n_per_m` (> 0) and
 /// the liquid–liquid interfacial tension `sigma12_n_per_m` (≥ 0), all in N/m.
@@ -179,7 +179,7 @@ fn angle_opposite(x: f64, y: f64, z: f64) -> f64 {
     2.0 * num.atan2(den)
 }
 
-/// Neumann triangle of the gas/liquid 1/liquid 2 triple line (physics.md §5).
+/// Neumann triangle of the gas/liquid 1/liquid 2 triple line (docs/model.md §5).
 ///
 /// Tensions in N/m. Returns `None` when no lens exists (the regime is not
 /// [`Regime::Lens`]) or the input is invalid; [`regime`] tells which.
@@ -248,7 +248,7 @@ pub struct Doublet {
     pub g1_z_m: f64,
     /// Axial position of the centroid G2 of liquid 2's volume, m.
     pub g2_z_m: f64,
-    /// Centroid distance G1G2 = `g2_z_m − g1_z_m`, m. physics.md R13/R15 quote
+    /// Centroid distance G1G2 = `g2_z_m − g1_z_m`, m. docs/model.md R13/R15 quote
     /// it over the initial drop radius R0 (not the diameter).
     pub g1g2_m: f64,
     /// Laplace pressure of liquid 1 over the gas, 2σ1/R1, Pa.
@@ -256,7 +256,7 @@ pub struct Doublet {
     /// Laplace pressure of liquid 2 over the gas, 2σ2/R2, Pa.
     pub pressure2_pa: f64,
     /// Angle between the gas–1 tangent at the triple line and −z, degrees
-    /// (θ1 of Eq. (27), Natsui 2021; physics.md §5).
+    /// (θ1 of Eq. (27), Natsui 2021; docs/model.md §5).
     pub theta1_deg: f64,
     /// Angle between the gas–2 tangent at the triple line and +z, degrees
     /// (θ2 of Eq. (27)).
@@ -438,7 +438,7 @@ pub fn doublet(
     let g1_z = a * (cap_moment(eta12) - cap_moment(eta1)) / v1_unit;
     let g2_z = a * (cap_moment(eta2) - cap_moment(eta12)) / v2_unit;
 
-    // Axial angles of Eq. (27), Natsui 2021 (physics.md §5): θ1 from −z,
+    // Axial angles of Eq. (27), Natsui 2021 (docs/model.md §5): θ1 from −z,
     // θ2 and θ12 from +z, each in [0°, 180°].
     let theta1 = t1.0.abs().atan2(-t1.1);
     let theta2 = t2.0.abs().atan2(t2.1);
@@ -500,7 +500,7 @@ pub fn separated_g1g2(radius1_m: f64, radius2_m: f64) -> f64 {
 /// σ1 as in paper A's Table 1:
 /// `(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12) / σ1` (dimensionless).
 ///
-/// Tensions in N/m; angles in degrees with the meaning of physics.md §5: θ1
+/// Tensions in N/m; angles in degrees with the meaning of docs/model.md §5: θ1
 /// between the gas–1 tangent and −z, θ2 between the gas–2 tangent and +z, θ12
 /// between the 1–2 tangent and +z (z from liquid 1 to liquid 2). NaN if σ1 is
 /// not positive and finite.
@@ -594,7 +594,7 @@ mod tests {
         psi_deg.to_radians().sin_cos()
     }
 
-    /// Physics: paper A §3.2 / physics.md R16 — matte/slag (σ1 0.4, σ2 0.2):
+    /// Physics: paper A §3.2 / docs/model.md R16 — matte/slag (σ1 0.4, σ2 0.2):
     /// σ12 = 0.1 complete engulfing (slag, the lower tension, is the shell),
     /// 0.2 engulfing boundary, 0.3–0.5 lens, 0.6 point contact; equal matte
     /// drops: lens up to 0.79, point contact at 0.8 and 1.0 (paper A §3.1).
@@ -971,7 +971,7 @@ mod tests {
     }
 
     /// Physics: σ12 → σ1 + σ2 turns the doublet into two spheres touching at a
-    /// point: G1G2 → R1 + R2 (2R0 for equal drops, physics.md R13 "≥ 0.8: 2").
+    /// point: G1G2 → R1 + R2 (2R0 for equal drops, docs/model.md R13 "≥ 0.8: 2").
     /// First order in the contact radius a: each sphere is cut by the plane of
     /// the triple line at the sagitta a²/(2Rk), so the centres, and with them
     /// the centroids (the cut caps hold only O(a⁴) volume), are
@@ -1017,7 +1017,7 @@ mod tests {
         }
     }
 
-    /// Reference: physics.md R13 — equal matte drops (σ1 = σ2 = 0.4 N/m),
+    /// Reference: docs/model.md R13 — equal matte drops (σ1 = σ2 = 0.4 N/m),
     /// V = 4/3 π R0³ each, zero gravity: G1G2/R0 at σ12 = 0.1 … 0.7 N/m, and 2
     /// from 0.8 on. Tolerance 5e-4 abs: R13 gives 4 decimals.
     #[test]
@@ -1036,7 +1036,7 @@ mod tests {
         }
     }
 
-    /// Reference: physics.md R15 — matte/slag (σ1 0.4, σ2 0.2 N/m), equal
+    /// Reference: docs/model.md R15 — matte/slag (σ1 0.4, σ2 0.2 N/m), equal
     /// volumes 4/3 π R0³: G1G2/R0 and the Eq. (27) angles at σ12 = 0.3, 0.4,
     /// 0.5 N/m. Tolerances: 5e-4 abs on G1G2/R0 (4 decimals given), 0.02° on
     /// the angles (2 decimals given, plus margin).

@@ -709,7 +709,7 @@ fn find_root(residual: impl Fn(f64) -> Result<f64, String>, start: f64) -> Resul
 mod tests {
     use super::*;
 
-    /// Standard gravity used by physics.md R17–R19 \[m/s²\].
+    /// Standard gravity used by docs/model.md R17–R19 \[m/s²\].
     const G_STANDARD_M_S2: f64 = 9.81;
 
     /// Relative difference |a − b| / |b|.
@@ -1029,14 +1029,14 @@ mod tests {
         );
     }
 
-    /// physics.md R17: Fe drop of a 5 mm sphere's volume, ρ 7020, σ 1.8, θ 125°, g 9.81:
+    /// docs/model.md R17: Fe drop of a 5 mm sphere's volume, ρ 7020, σ 1.8, θ 125°, g 9.81:
     /// height 3.80 mm, and 4.10 mm without gravity.
     #[test]
     fn reference_r17_iron() {
         let volume_m3 = sphere_volume_m3(5e-3);
         let drop = solve(volume_m3, 7020.0, 1.8, 125.0, G_STANDARD_M_S2);
         let cap = spherical_cap(volume_m3, 125.0);
-        // 3 significant digits in physics.md: half a unit in the last digit, 0.005 mm.
+        // 3 significant digits in docs/model.md: half a unit in the last digit, 0.005 mm.
         assert!(
             (drop.height_m - 3.80e-3).abs() <= 0.5e-5,
             "H = {}",
@@ -1049,7 +1049,7 @@ mod tests {
         );
     }
 
-    /// physics.md R18: Al drop of 70 mg (V = 70e-6 kg / 2240 kg/m³), σ 0.9, θ 90°, g 9.81:
+    /// docs/model.md R18: Al drop of 70 mg (V = 70e-6 kg / 2240 kg/m³), σ 0.9, θ 90°, g 9.81:
     /// height 2.41 mm.
     #[test]
     fn reference_r18_aluminium() {
@@ -1062,14 +1062,14 @@ mod tests {
         );
     }
 
-    /// physics.md R19: water drop of a 2 mm sphere's volume, ρ 997, σ 0.073, g 9.81:
+    /// docs/model.md R19: water drop of a 2 mm sphere's volume, ρ 997, σ 0.073, g 9.81:
     /// height 0.553 mm at θ 30° and 1.222 mm at θ 90°.
     #[test]
     fn reference_r19_water() {
         let volume_m3 = sphere_volume_m3(2e-3);
         let glass = solve(volume_m3, 997.0, 0.073, 30.0, G_STANDARD_M_S2);
         let teflon = solve(volume_m3, 997.0, 0.073, 90.0, G_STANDARD_M_S2);
-        // 4 significant digits in physics.md (1.222 mm; 0.553 mm has 3): half a unit in the
+        // 4 significant digits in docs/model.md (1.222 mm; 0.553 mm has 3): half a unit in the
         // last digit, 0.5 µm.
         assert!(
             (glass.height_m - 0.553e-3).abs() <= 0.5e-6,
@@ -1083,7 +1083,7 @@ mod tests {
         );
     }
 
-    /// physics.md R20: matte drop of a 2 mm sphere's volume, ρ 4500, σ 0.4, θ 90°, g 9.8:
+    /// docs/model.md R20: matte drop of a 2 mm sphere's volume, ρ 4500, σ 0.4, θ 90°, g 9.8:
     /// height 1.229 mm.
     #[test]
     fn reference_r20_matte() {

@@ -1,6 +1,6 @@
 //! Least-squares sphere and circle fits, and the contact angle of a cap resting on a plane.
 //!
-//! Method (physics.md §7, "Contact angle"): the free-surface particles of a sessile drop in a
+//! Method (docs/model.md §7, "Contact angle"): the free-surface particles of a sessile drop in a
 //! band above the wall are fitted with a sphere (a circle for a side-view profile), and the
 //! contact angle follows from where the wall plane cuts it, `θ = arccos((z_w − c_z)/R)`, with
 //! `z_w` the wall *surface* (top wall-particle layer + l0/2) and θ measured inside the liquid,
@@ -21,7 +21,7 @@
 //! Known biases of the *measurement*, not of the fit (see the tests): surface particles sit
 //! about half a spacing inside the true free surface, so the fitted radius is ~l0/2 short and
 //! θ is biased — down for θ < 90°, up for θ > 90°; the wall-position convention (z_w at the top
-//! wall layer + l0/2) moves θ by 2–3° per l0/2 at l0/R = 0.06 (physics.md §7).
+//! wall layer + l0/2) moves θ by 2–3° per l0/2 at l0/R = 0.06 (docs/model.md §7).
 
 use nalgebra::{DMatrix, DVector};
 
@@ -187,7 +187,7 @@ fn fit_hypersphere<const D: usize>(points: &[[f64; D]]) -> Result<([f64; D], f64
 
 /// Least-squares sphere through 3-D points (m).
 ///
-/// Algebraic fit `|x|² = 2c·x + k` (physics.md §7) followed by Gauss–Newton on the geometric
+/// Algebraic fit `|x|² = 2c·x + k` (docs/model.md §7) followed by Gauss–Newton on the geometric
 /// distances (module documentation). Needs at least 4 finite, non-coplanar points; coplanar
 /// (including concyclic) or coincident points give Err.
 pub fn fit_sphere(points: &[[f64; 3]]) -> Result<Sphere, String> {
@@ -256,7 +256,7 @@ fn band_limits(wall_z_m: f64, band_m: (f64, f64)) -> Result<(f64, f64), String> 
 /// wall surface in metres; infinite limits allowed), fits a sphere to them ([`fit_sphere`]) and
 /// returns `(θ, sphere)` with θ from [`cap_contact_angle_deg`]. `wall_z_m` is the wall surface
 /// (top wall-particle layer + l0/2). Near-wall bands make the result insensitive to gravity
-/// flattening (physics.md §7: Bond number above ~0.1). Err with fewer than 4 selected points,
+/// flattening (docs/model.md §7: Bond number above ~0.1). Err with fewer than 4 selected points,
 /// a degenerate selection, or a sphere the wall plane does not cut.
 pub fn contact_angle_from_surface_points(
     points: &[[f64; 3]],

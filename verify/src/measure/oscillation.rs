@@ -1,13 +1,13 @@
 //! Period and damping of a sampled, possibly noisy, damped oscillation.
 //!
-//! The verification cases (physics.md §6, the cube-drop test of Natsui et al. 2021, Appendix,
+//! The verification cases (docs/model.md §6, the cube-drop test of Natsui et al. 2021, Appendix,
 //! and the G1G2 curves of its §3.1.3) produce a scalar time series `y(t)` — a droplet width,
-//! a centroid distance — that rings down towards an equilibrium value. physics.md §7 asks for
+//! a centroid distance — that rings down towards an equilibrium value. docs/model.md §7 asks for
 //! two families of numbers, reported side by side:
 //!
 //! 1. **Model quantities**: the full period `T = 2π/ω` and the amplitude decay rate `γ` of
 //!    `y = A e^{−γt} cos(ωt + φ) + B`, which are what Lamb's / Rayleigh's theory predicts
-//!    (`T_l`, `γ_l` of physics.md §6). [`fit_damped_cosine`] obtains them by a least-squares
+//!    (`T_l`, `γ_l` of docs/model.md §6). [`fit_damped_cosine`] obtains them by a least-squares
 //!    fit; [`period_from_maxima`] and [`log_decrement_rate`] are the quick extrema-based
 //!    estimates.
 //! 2. **The paper's quantities** (Natsui 2021, §3.1.3): its "period" is the time from a minimum
@@ -321,7 +321,7 @@ pub fn period_from_maxima(ex: &[Extremum]) -> Option<f64> {
 }
 
 /// Natsui 2021's "oscillation period" (s): the time from a minimum to the next maximum, which
-/// is a **half**-period of the oscillation (physics.md, Corrections, "A §3.1.3").
+/// is a **half**-period of the oscillation (docs/model.md C14).
 ///
 /// Precisely: the first index `i ≥ skip` such that `ex[i]` is a minimum and `ex[i + 1]` a
 /// maximum; the result is `ex[i+1].time_s − ex[i].time_s`. The paper measures it "after the
@@ -744,7 +744,7 @@ mod tests {
     use super::*;
     use nalgebra::DMatrix;
 
-    /// Cube-drop reference (physics.md §8, R5/R6): l = 4 period and viscous decay.
+    /// Cube-drop reference (docs/model.md §8, R5/R6): l = 4 period and viscous decay.
     const T_REF: f64 = 1.2137e-3;
     const GAMMA_REF: f64 = 48.8;
     /// Width-like signal: 1.24 mm equilibrium, 0.1 mm initial amplitude.

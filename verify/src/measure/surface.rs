@@ -1,11 +1,11 @@
 //! Classification of the particles of a simulated liquid cloud: free surface and liquid–liquid
 //! interface.
 //!
-//! Method (physics.md §7, "Measurement"):
+//! Method (docs/model.md §7, "Measurement"):
 //!
 //! - **Free surface.** A particle whose neighbour count (liquid particles of any phase plus the
 //!   fixed wall particles) within the kernel support `2h = 2.1 l0` (paper A's `h = 1.05 l0`,
-//!   physics.md §1) is below [`FREE_SURFACE_FRACTION`] = 0.75 of the bulk count: the bulk
+//!   docs/model.md §1) is below [`FREE_SURFACE_FRACTION`] = 0.75 of the bulk count: the bulk
 //!   simple cubic lattice's ([`solver::lattice::neighbour_count`]: 32 at 2.1 l0, computed, not
 //!   typed in), or the cloud's own where a relaxed, compressed state has more
 //!   ([`bulk_reference`]). On a lattice face normal
@@ -15,7 +15,7 @@
 //!   per l0² on a (110) face, 0.56 on (111); 0.70 on average over a sphere: tests). Wall
 //!   particles count as neighbours, so liquid lying on a wall is not flagged there.
 //! - **Interface.** A particle with a neighbour of another liquid within
-//!   [`INTERFACE_RADIUS_L0`] = 1.5 l0 (physics.md §7): on the lattice that is the face (l0) and
+//!   [`INTERFACE_RADIUS_L0`] = 1.5 l0 (docs/model.md §7): on the lattice that is the face (l0) and
 //!   edge (√2 l0) neighbours, so one layer on each side of a 1–2 interface is flagged.
 //!
 //! Neighbours come from the solver's cell-list search ([`solver::neighbours::NeighbourSearch`]),
@@ -25,14 +25,15 @@ use solver::neighbours::NeighbourSearch;
 use solver::state::Vec3;
 
 /// Radius of the neighbour count of the free-surface test, in units of l0: the kernel support
-/// `2h` at paper A's `h = 1.05 l0` (physics.md §1).
+/// `2h` at paper A's `h = 1.05 l0` (docs/model.md §1).
 pub const FREE_SURFACE_RADIUS_L0: f64 = 2.1;
 /// A particle is on the free surface when it has fewer than this fraction of the bulk neighbour
-/// count ([`bulk_reference`]) within [`FREE_SURFACE_RADIUS_L0`] (physics.md §7: "a neighbour
-/// count below ~0.75 of bulk").
+/// count ([`bulk_reference`]) within [`FREE_SURFACE_RADIUS_L0`] (docs/model.md §7:
+/// a neighbour count below about 0.75 of the bulk count).
 pub const FREE_SURFACE_FRACTION: f64 = 0.75;
 /// A particle is on a liquid–liquid interface when a particle of another liquid lies within this
-/// distance, in units of l0 (physics.md §7: "an unlike neighbour within ~1.5 l0").
+/// distance, in units of l0 (docs/model.md §7: a
+/// particle of another liquid within about 1.5 l0).
 pub const INTERFACE_RADIUS_L0: f64 = 1.5;
 
 /// A snapshot of a liquid cloud, as the measurements see it.
@@ -360,7 +361,7 @@ mod tests {
     #[test]
     fn bulk_count_is_the_lattice_count() {
         // Lattice vectors with |v|² < 2.1² = 4.41: 6 (|v|² = 1) + 12 (2) + 8 (3) + 6 (4) = 32
-        // (physics.md §4: "32 (2.1 l0)"). Exact integer.
+        // (docs/model.md §4: 32 neighbours within 2.1 l0). Exact integer.
         assert_eq!(bulk_neighbour_count(), 6 + 12 + 8 + 6);
     }
 

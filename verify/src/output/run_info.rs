@@ -31,7 +31,8 @@ pub struct RunInfo {
     pub scene: solver::Scene,
     /// The effects built, in words.
     pub effects: Vec<String>,
-    /// Git revision of the build (`git describe --always --dirty`).
+    /// Git revision of the build: the commit, 12 hex digits, `-dirty` if the sources differed
+    /// from it (`verify/build.rs`).
     pub git_revision: String,
     /// Worker threads.
     pub threads: usize,

@@ -65,14 +65,54 @@ fn write_markdown(
     regressions: Option<&[Regression]>,
 ) -> anyhow::Result<()> {
     let mut s = String::new();
-    header(&mut s, fidelity, metrics, regressions);
     let out = path.parent().unwrap_or(Path::new("."));
+    header(&mut s, fidelity, metrics, regressions);
+    provenance(&mut s, &run_revisions(out, fidelity, cases));
     for case in cases {
         let ms: Vec<&Metric> = metrics.iter().filter(|m| m.case == case.name()).collect();
         case_section(&mut s, case.as_ref(), fidelity, &ms, out);
     }
     crate::output::atomic_write(path, s.as_bytes())?;
     Ok(())
+}
+
+/// How many of `cases`' runs saved under `out` each revision of the code made (from their
+/// `run_info.json`), in order of revision.
+fn run_revisions(
+    out: &Path,
+    fidelity: Fidelity,
+    cases: &[Box<dyn Case>],
+) -> std::collections::BTreeMap<String, usize> {
+    let mut revs = std::collections::BTreeMap::new();
+    for case in cases {
+        for spec in case.runs(fidelity) {
+            let dir = out.join(case.name()).join(&spec.id);
+            if let Ok(info) = crate::output::run_info::RunInfo::read(&dir) {
+                *revs.entry(info.git_revision).or_insert(0) += 1;
+            }
+        }
+    }
+    revs
+}
+
+/// Which revisions made the runs reported, and whether that is one clean revision.
+fn provenance(s: &mut String, revs: &std::collections::BTreeMap<String, usize>) {
+    let list: Vec<String> = revs.iter().map(|(r, n)| format!("`{r}` ({n})")).collect();
+    let clean = revs.len() == 1 && revs.keys().all(|r| !r.contains('-') && r != "unknown");
+    let verdict = if revs.is_empty() {
+        "no run records found".to_string()
+    } else if clean {
+        "all by one clean revision".to_string()
+    } else {
+        "**not one clean revision**: a dirty tree or several revisions; `verify all --force` \
+         re-runs every run with one binary"
+            .to_string()
+    };
+    let _ = writeln!(
+        s,
+        "Runs made by revision (count, from each `run_info.json`): {} — {verdict}.\n",
+        list.join(", ")
+    );
 }
 
 /// The title, how many metrics pass, and the regressions against a baseline if checked.
@@ -87,7 +127,7 @@ fn header(
     let _ = writeln!(s, "# Verification summary\n");
     let _ = writeln!(
         s,
-        "Fidelity **{}**, git revision `{}`. {passed} of {} judged metrics within tolerance; {} \
+        "Fidelity **{}**; this report was written by the binary of revision `{}`. {passed} of {} judged metrics within tolerance; {} \
          reported without a reference. Every reference value is computed by the code \
          (`verify/src/analytic`); \"paper\" is what the paper's own simulation reached \
          (`reference/paper_values.toml`). Error = value − reference.\n",

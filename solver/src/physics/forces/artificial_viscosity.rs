@@ -1,5 +1,5 @@
 //! Artificial viscosity (Monaghan 1992): Eqs. (12)–(13), Natsui 2021, with the `m_i m_j`
-//! factor that makes the term a force (physics.md §3):
+//! factor that makes the term a force (docs/model.md §3, correction C2):
 //! `F_i = − Σ_j m_i m_j Π_ij ∇_i W_ij` [N] for approaching pairs (`v_ij · x_ij < 0`),
 //! `Π_ij = (−α1 c φ_ij + α2 φ_ij²) / ρ̄_ij`, `φ_ij = h v_ij·x_ij / (r² + (0.1 h)²)`.
 //!

@@ -1,7 +1,8 @@
 //! Laminar viscosity: Eq. (11), Natsui 2021 (the Hu & Adams 2006 form),
 //! `F_i = Σ_j μ_ij (V_i² + V_j²) ((dW/dr)/r) v_ij` [N] with the pair viscosity `μ_ij` of the
 //! model (the harmonic mean `2μ_iμ_j/(μ_i + μ_j)` between liquids, the liquid's own `μ` against a
-//! no-slip wall). The kernel factor is the scalar `(dW/dr)/r` times `v_ij` (physics.md §3).
+//! no-slip wall). The kernel factor is the scalar `(dW/dr)/r` times `v_ij` (docs/model.md §3,
+//! correction C3).
 //!
 //! Free-slip walls take no part: their lanes carry `μ = 0`.
 

@@ -4,8 +4,8 @@
 //! `            + Σ_j μ_ij (V_i² + V_j²) ((dW/dr)/r) v_ij`                       (laminar)
 //! `            + Σ_j C_ij P'(r_ij) e_ij + m_i g`                                (tension, gravity)
 //!
-//! — Eqs. (11)–(13) and (15) of Natsui 2021 as corrected in physics.md §3–4. Each term is a type
-//! in its own file implementing [`PairTerm`]: [`Pressure`], [`LaminarViscosity`],
+//! — Eqs. (11)–(13) and (15) of Natsui 2021 as corrected in docs/model.md §3–4 (C2–C4, C6).
+//! Each term is a type in its own file implementing [`PairTerm`]: [`Pressure`], [`LaminarViscosity`],
 //! [`ArtificialViscosity`], the potential's
 //! [`PairwisePotential`](crate::physics::surface_tension::PairwisePotential), and the
 //! continuity density rate [`ContinuityRate`], and the liquid–wall repulsion

@@ -1,7 +1,7 @@
 //! Kondo et al. (2007)'s pairwise potential, `P(r) = (1/3)(r − 1.5 l0 + 0.5 r_e)(r − r_e)²` for
 //! `r < r_e` [m³]; the force on `i` is `F_i = Σ_j C_ij P'(r_ij) e_ij` [N] with
-//! `P'(r) = (r − l0)(r − r_e)` — Eq. (15), Natsui 2021, in the corrected form of physics.md §4: the pair
-//! coefficient sits inside the sum and the normalisation `S` is a constant of the reference
+//! `P'(r) = (r − l0)(r − r_e)` — Eq. (15), Natsui 2021, in the corrected form of docs/model.md §4
+//! (correction C4): the pair coefficient sits inside the sum and the normalisation `S` is a constant of the reference
 //! lattice, not each particle's current sum (which would blow up at the surface).
 //!
 //! A smoother family beside it (the project's, not the papers'): `P'(r) = (r − l0)(r − r_e)

@@ -84,7 +84,7 @@ fn period(case: &str, m: &CubeRun, lamb: &Lamb) -> Metric {
 fn damping(case: &str, m: &CubeRun, lamb: &Lamb) -> Metric {
     let c2 = m.c2_m2_s2;
     let scene = &m.run.info.scene;
-    // the artificial viscosity adds ν_AV ≈ α1 h c/10 (physics.md §3): the reference damping
+    // the artificial viscosity adds ν_AV ≈ α1 h c/10 (docs/model.md §3): the reference damping
     // counts it, since the scene builds it
     let alpha1 = scene
         .effects

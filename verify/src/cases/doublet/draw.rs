@@ -1,7 +1,7 @@
 //! The doublets' plots: G1G2(t), and its equilibrium, period and damping against σ12.
 
 use super::measure::DoubletRun;
-use super::{drop_volume_m3, R0_M};
+use super::{drop_volume_m3, Start, R0_M};
 use crate::analytic::neumann;
 use crate::report::plot::{self, Plot, Series, SeriesKind};
 use std::path::Path;
@@ -11,9 +11,12 @@ use std::path::Path;
 pub fn plots(
     title: &str,
     sigma_n_m: (f64, f64),
-    runs: &[DoubletRun],
+    all: &[DoubletRun],
     dir: &Path,
 ) -> anyhow::Result<()> {
+    // the runs from touching drops: the merged starts are judged only on parting
+    let runs: Vec<&DoubletRun> = all.iter().filter(|m| m.start == Start::Touching).collect();
+    let runs = &runs[..];
     histories(title, runs, dir)?;
     equilibrium(sigma_n_m, runs, dir)?;
     let fitted = |y: fn(&DoubletRun) -> Option<f64>| -> Vec<(f64, f64)> {
@@ -35,7 +38,7 @@ pub fn plots(
     )
 }
 
-fn histories(title: &str, runs: &[DoubletRun], dir: &Path) -> anyhow::Result<()> {
+fn histories(title: &str, runs: &[&DoubletRun], dir: &Path) -> anyhow::Result<()> {
     let curves = runs
         .iter()
         .map(|m| Series {
@@ -62,7 +65,7 @@ fn histories(title: &str, runs: &[DoubletRun], dir: &Path) -> anyhow::Result<()>
     )
 }
 
-fn equilibrium((s1, s2): (f64, f64), runs: &[DoubletRun], dir: &Path) -> anyhow::Result<()> {
+fn equilibrium((s1, s2): (f64, f64), runs: &[&DoubletRun], dir: &Path) -> anyhow::Result<()> {
     let v0 = drop_volume_m3();
     let analytic_curve: Vec<(f64, f64)> = (1..=79)
         .map(|k| k as f64 * 0.01)

@@ -3,7 +3,7 @@
 //! paper's trends reported.
 
 use super::measure::DoubletRun;
-use super::{drop_volume_m3, paper_values, Pair, R0_M};
+use super::{drop_volume_m3, paper_values, Pair, Start, R0_M};
 use crate::analytic::neumann::{self, Regime};
 use crate::measure::geometry::DoubletAngles;
 use crate::suite::{Metric, Tolerance};
@@ -18,19 +18,136 @@ pub struct Judge<'a> {
     pub sigma_n_m: (f64, f64),
     /// Particle spacing [m].
     pub l0_m: f64,
+    /// σ12 values [N/m] not simulated because their model equals that of another σ12 (the
+    /// second), so their runs would be identical.
+    pub same_as: Vec<(f64, f64)>,
 }
 
 impl Judge<'_> {
     /// Every metric of the case.
     pub fn metrics(&self, runs: &[DoubletRun]) -> anyhow::Result<Vec<Metric>> {
         let mut out = Vec::new();
-        for m in runs {
+        // the merged starts are judged only on parting (below)
+        for m in runs.iter().filter(|m| m.start == Start::Touching) {
             out.extend(self.run_metrics(m)?);
         }
         if self.pair == Pair::Equal {
+            let touching = |m: &&DoubletRun| m.start == Start::Touching;
+            let touching: Vec<&DoubletRun> = runs.iter().filter(touching).collect();
+            let merged: Vec<&DoubletRun> =
+                runs.iter().filter(|m| m.start == Start::Merged).collect();
             out.extend(self.trends(runs));
+            out.extend(self.threshold(&touching, Start::Touching));
+            out.extend(self.threshold(&merged, Start::Merged));
+        } else {
+            out.extend(self.ground_states(runs)?);
         }
         Ok(out)
+    }
+
+    /// The regime of the ground state where a run also started engulfed: both starts must end
+    /// in a regime the Neumann inequalities accept; if they end apart, the regime depends on
+    /// the start and the runs have not found the ground state.
+    fn ground_states(&self, runs: &[DoubletRun]) -> anyhow::Result<Vec<Metric>> {
+        let (s1, s2) = self.sigma_n_m;
+        let mut out = Vec::new();
+        for e in runs.iter().filter(|m| m.start == Start::Engulfed) {
+            let s12 = e.sigma12_n_m;
+            let Some(t) = runs
+                .iter()
+                .find(|m| m.start == Start::Touching && m.sigma12_n_m == s12)
+            else {
+                continue;
+            };
+            let regime = neumann::regime(s1, s2, s12).map_err(anyhow::Error::msg)?;
+            let (expected, accepted) = expected_regime(regime);
+            let both = accepted.contains(&t.regime_seen) && accepted.contains(&e.regime_seen);
+            out.push(
+                Metric::check(self.case, format!("ground state σ12={} (two starts)", S12(s12)), "match", both, "both starts end in the regime the Neumann inequalities give, or not")
+                    .run(e.run)
+                    .note(format!(
+                        "expected {expected}; from touching drops: {} at {:.0} ms; from matte inside slag: {} at {:.0} ms{}",
+                        t.regime_seen,
+                        t.run.last.time_s * 1e3,
+                        e.regime_seen,
+                        e.run.last.time_s * 1e3,
+                        if t.regime_seen == e.regime_seen { "" } else { " — the end state depends on the start" }
+                    )),
+            );
+        }
+        Ok(out)
+    }
+
+    /// Whether the drops of a run are together at the end: some liquid-1 particle within
+    /// 1.5 l0 of a liquid-2 particle (docs/model.md §7's interface distance).
+    fn joined(m: &DoubletRun) -> bool {
+        m.contact_particles > 0
+    }
+
+    /// The separation limit σ12 = σ1 + σ2 (Eq. 25) measured by runs from one kind of start:
+    /// each run joined or apart at the end against the limit, and the limit as the midpoint
+    /// between the largest σ12 that stayed joined and the smallest that came apart, its
+    /// tolerance half that bracket (the sweep's resolution).
+    fn threshold(&self, runs: &[&DoubletRun], start: Start) -> Vec<Metric> {
+        if runs.len() < 2 {
+            return Vec::new();
+        }
+        let (s1, s2) = self.sigma_n_m;
+        let limit = s1 + s2;
+        let how = match start {
+            Start::Touching => "touching start",
+            Start::Merged => "merged start",
+            Start::Engulfed => "engulfed start",
+        };
+        let mut out = Vec::new();
+        if start == Start::Merged {
+            for m in runs {
+                let s12 = m.sigma12_n_m;
+                let expect_joined = s12 < limit;
+                out.push(
+                    Metric::check(self.case, format!("joined σ12={s12:.2} ({how})"), "match", Self::joined(m) == expect_joined, "the drops are together or apart at the end as Eq. 25 says, or not")
+                        .run(m.run)
+                        .note(format!("{}expected {} (σ12 {} σ1 + σ2 = {limit:.2} N/m); seen {} ({} liquid-1 particles within 1.5 l0 of liquid 2; G1G2/R0 = {:.2} at the end)", m.run.status_note(), if expect_joined { "together" } else { "apart" }, if expect_joined { "<" } else { "≥" }, if Self::joined(m) { "together" } else { "apart" }, m.contact_particles, m.separation.g1g2_r0.last().copied().unwrap_or(f64::NAN))),
+                );
+            }
+        }
+        let lo = runs
+            .iter()
+            .filter(|m| Self::joined(m))
+            .map(|m| m.sigma12_n_m)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let hi = runs
+            .iter()
+            .filter(|m| !Self::joined(m))
+            .map(|m| m.sigma12_n_m)
+            .fold(f64::INFINITY, f64::min);
+        let same: Vec<String> = self
+            .same_as
+            .iter()
+            .map(|(s, s0)| format!("{s:.2} (= {s0:.2})"))
+            .collect();
+        let same = if same.is_empty() || start == Start::Merged {
+            String::new()
+        } else {
+            format!(
+                "; not simulated, their model being identical to another's: σ12 = {}",
+                same.join(", ")
+            )
+        };
+        let metric = Metric::new(
+            self.case,
+            format!("separation limit ({how})"),
+            "N/m",
+            f64::NAN,
+        );
+        out.push(if lo < hi && lo.is_finite() && hi.is_finite() {
+            Metric { value: 0.5 * (lo + hi), ..metric }
+                .against(limit, Tolerance::absolute(0.5 * (hi - lo), format!("half the bracket of the sweep: joined up to σ12 = {lo:.2}, apart from {hi:.2} N/m")))
+                .note(format!("Eq. 25: drops part for σ12 ≥ σ1 + σ2; {} runs from a {how}{same}", runs.len()))
+        } else {
+            metric.note(format!("no bracket: joined up to σ12 = {lo:.2}, apart from {hi:.2} N/m ({} runs from a {how}){same}", runs.len()))
+        });
+        out
     }
 
     fn run_metrics(&self, m: &DoubletRun) -> anyhow::Result<Vec<Metric>> {
@@ -53,13 +170,14 @@ impl Judge<'_> {
         let (s1, s2) = self.sigma_n_m;
         let (s12, status) = (m.sigma12_n_m, m.run.status_note());
         let (g_eq, g_sd) = (m.separation.equilibrium, m.separation.residual);
-        let metric = Metric::new(self.case, format!("G1G2/R0 σ12={s12:.1}"), "-", g_eq).run(m.run);
+        let metric =
+            Metric::new(self.case, format!("G1G2/R0 σ12={}", S12(s12)), "-", g_eq).run(m.run);
         let v0 = drop_volume_m3();
         if regime == Regime::PointContact {
             // σ12 ≥ σ1 + σ2 (Eq. 24–25): no lens; the drops touch at a point or part
             let parted = g_eq >= 2.0 - self.l0_m / R0_M;
             vec![
-                Metric::check(self.case, format!("separation σ12={s12:.1}"), "match", parted, "point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not")
+                Metric::check(self.case, format!("separation σ12={}", S12(s12)), "match", parted, "point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not")
                     .run(m.run)
                     .note(format!("{status}G1G2/R0 = {g_eq:.3} at the end (Eq. 25: the liquids separate if σ12 ≥ 2σ1)")),
                 metric.note(format!("{status}mean over the last quarter (±{g_sd:.3}); σ12 ≥ σ1 + σ2: touching spheres give 2, parting more")),
@@ -94,7 +212,7 @@ impl Judge<'_> {
             out.push(
                 Metric::new(
                     self.case,
-                    format!("G1G2 period σ12={s12:.1}"),
+                    format!("G1G2 period σ12={}", S12(s12)),
                     "ms",
                     fit.period_s * 1e3,
                 )
@@ -104,7 +222,7 @@ impl Judge<'_> {
             out.push(
                 Metric::new(
                     self.case,
-                    format!("G1G2 damping σ12={s12:.1}"),
+                    format!("G1G2 damping σ12={}", S12(s12)),
                     "1/s",
                     fit.damping_rate_per_s,
                 )
@@ -113,10 +231,10 @@ impl Judge<'_> {
             );
         }
         if let Some(hp) = sep.paper_half_period_s {
-            out.push(Metric::new(self.case, format!("half-period (paper's definition) σ12={s12:.1}"), "ms", hp * 1e3).run(m.run).note(format!("minimum to next maximum of G1G2 after {} extrema (the paper: after three oscillations)", sep.paper_skip)));
+            out.push(Metric::new(self.case, format!("half-period (paper's definition) σ12={}", S12(s12)), "ms", hp * 1e3).run(m.run).note(format!("minimum to next maximum of G1G2 after {} extrema (the paper: after three oscillations)", sep.paper_skip)));
         }
         if let Some(dr) = sep.paper_damping_per_s {
-            out.push(Metric::new(self.case, format!("damping (paper's definition) σ12={s12:.1}"), "1/s", dr).run(m.run).note("fall of (max − min) of G1G2/R0 per half-period, divided by the half-period (Natsui 2021 §3.1.3)"));
+            out.push(Metric::new(self.case, format!("damping (paper's definition) σ12={}", S12(s12)), "1/s", dr).run(m.run).note("fall of (max − min) of G1G2/R0 per half-period, divided by the half-period (Natsui 2021 §3.1.3)"));
         }
         out
     }
@@ -127,7 +245,7 @@ impl Judge<'_> {
         let (expected, accepted) = expected_regime(regime);
         Metric::check(
             self.case,
-            format!("regime σ12={s12:.1}"),
+            format!("regime σ12={}", S12(s12)),
             "match",
             accepted.contains(&seen),
             "a regime either matches the Neumann inequalities or not",
@@ -152,7 +270,7 @@ impl Judge<'_> {
             Err(e) => {
                 return Ok(vec![Metric::new(
                     self.case,
-                    format!("θ12 σ12={s12:.1}"),
+                    format!("θ12 σ12={}", S12(s12)),
                     "deg",
                     f64::NAN,
                 )
@@ -168,12 +286,12 @@ impl Judge<'_> {
         ]
         .into_iter()
         .map(|(name, val, reference)| {
-            Metric::new(self.case, format!("{name} σ12={s12:.1}"), "deg", val).against(reference, self.angle_tolerance(name, s12)).run(m.run).note("sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids")
+            Metric::new(self.case, format!("{name} σ12={}", S12(s12)), "deg", val).against(reference, self.angle_tolerance(name, s12)).run(m.run).note("sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids")
         })
         .collect();
         out.push(
-            Metric::new(self.case, format!("Eq. 27 residual σ12={s12:.1}"), "%", 100.0 * an.eq27_residual)
-                .against(0.0, Tolerance::absolute(10.0, "10 %: the paper's own mean error (Table 1)"))
+            Metric::new(self.case, format!("Eq. 27 residual σ12={}", S12(s12)), "%", 100.0 * an.eq27_residual)
+                .against(0.0, self.eq27_tolerance(s12, (d.theta1_deg, d.theta2_deg, d.theta12_deg)))
                 .paper(paper_values::lookup("matte_slag_doublet", "sigma12_n_m", s12, "eq27_residual_percent"))
                 .run(m.run)
                 .note(format!("(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1 from the measured angles; vector residual |Σσt|/σ1 = {:.1} %", 100.0 * an.vector_residual)),
@@ -201,6 +319,24 @@ impl Judge<'_> {
         )
     }
 
+    /// The Eq. 27 residual's tolerance [%]: the angle measurement's own errors (as in
+    /// [`Self::angle_tolerance`]) carried through `(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1`
+    /// at the analytic angles `(θ1, θ2, θ12)` [deg], in quadrature, twice.
+    fn eq27_tolerance(&self, s12: f64, (t1, t2, t12): (f64, f64, f64)) -> Tolerance {
+        let (s1, s2) = self.sigma_n_m;
+        let e = |what: &str| self.angle_tolerance(what, s12).abs / 2.0;
+        let term = |s: f64, t: f64, what: &str| s * t.to_radians().sin() * e(what).to_radians();
+        let sd = (term(s1, t1, "θ1").powi(2)
+            + term(s2, t2, "θ2").powi(2)
+            + term(s12, t12, "θ12").powi(2))
+        .sqrt()
+            / s1;
+        Tolerance::absolute(
+            200.0 * sd,
+            format!("twice the angle measurement's own errors ({:.1}°, {:.1}°, {:.1}°) carried through Eq. 27 at the analytic angles", e("θ1"), e("θ2"), e("θ12")),
+        )
+    }
+
     /// The paper's trends (Figs. 8–9), reported, not judged: the σ12 of the shortest period
     /// and of the strongest damping, below σ12 = 0.8 N/m.
     fn trends(&self, runs: &[DoubletRun]) -> Vec<Metric> {
@@ -223,7 +359,10 @@ impl Judge<'_> {
                 "N/m",
                 arg_best(&period, |x, y| x < y),
             )
-            .paper(Some(0.3))
+            .paper(paper_values::number(
+                "equal_doublet",
+                "sigma12_shortest_period_n_m",
+            ))
             .note("the paper's Fig. 8: the period falls up to σ12 ≈ 0.3 N/m, then rises"),
             Metric::new(
                 self.case,
@@ -231,9 +370,26 @@ impl Judge<'_> {
                 "N/m",
                 arg_best(&damping, |x, y| x > y),
             )
-            .paper(Some(0.4))
+            .paper(paper_values::number(
+                "equal_doublet",
+                "sigma12_strongest_damping_n_m",
+            ))
             .note("the paper's Fig. 9: damping strongest at σ12 = 0.4 N/m"),
         ]
+    }
+}
+
+/// σ12 [N/m] as a metric's name shows it: one decimal where that is exact (the paper's
+/// values), two otherwise (the sweep across 2σ1), so no two runs share a name.
+struct S12(f64);
+
+impl std::fmt::Display for S12 {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if ((self.0 * 10.0).round() - self.0 * 10.0).abs() < 1e-9 {
+            write!(f, "{:.1}", self.0)
+        } else {
+            write!(f, "{:.2}", self.0)
+        }
     }
 }
 

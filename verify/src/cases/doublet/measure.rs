@@ -1,7 +1,7 @@
 //! What a run of a doublet gives: the centroid distance G1G2(t)/R0, its equilibrium and
 //! oscillation, and the final state's regime and triple-line angles.
 
-use super::{Pair, R0_M};
+use super::{Pair, Start, R0_M};
 use crate::analytic::neumann::{self, Regime};
 use crate::measure::geometry::{self, DoubletAngles};
 use crate::measure::oscillation::{self, OscillationFit};
@@ -17,6 +17,11 @@ pub struct DoubletRun<'r> {
     pub index: usize,
     /// Its interfacial tension σ12 [N/m].
     pub sigma12_n_m: f64,
+    /// How it started.
+    pub start: Start,
+    /// The liquid-1 particles closer than 1.5 l0 to a liquid-2 particle at the end: the
+    /// contact between the drops (none when apart; a few at a point contact).
+    pub contact_particles: usize,
     /// G1G2/R0 over time.
     pub separation: Separation,
     /// The regime of the final state, in words.
@@ -70,10 +75,21 @@ pub fn doublet_runs<'r>(
         let g_final = separation.g1g2_r0.last().copied().unwrap_or(f64::NAN);
         let lens = neumann::regime(sigma_n_m.0, sigma_n_m.1, s12).map_err(anyhow::Error::msg)?
             == Regime::Lens;
+        let contact_particles = match surface::unlike_pairs(&cloud, &classes, 0, 1) {
+            Ok(pairs) => {
+                let mut firsts: Vec<u32> = pairs.iter().map(|p| p[0]).collect();
+                firsts.sort_unstable();
+                firsts.dedup();
+                firsts.len()
+            }
+            Err(_) => 0,
+        };
         out.push(DoubletRun {
             run,
             index,
             sigma12_n_m: s12,
+            start: start_of(&run.info.scene),
+            contact_particles,
             regime_seen: regime_seen(&cloud, &classes, g_final, l0_m),
             angles: (lens && pair == Pair::MatteSlag).then(|| {
                 geometry::doublet_angles(&cloud, &classes, [sigma_n_m.0, sigma_n_m.1, s12])
@@ -82,6 +98,18 @@ pub fn doublet_runs<'r>(
         });
     }
     Ok(out)
+}
+
+/// How a run's scene starts: a shell body is an engulfed start, one body a merged one.
+fn start_of(scene: &solver::Scene) -> Start {
+    let shell = |b: &solver::scene::Body| matches!(b.shape, solver::scene::BodyShape::Shell { .. });
+    if scene.bodies.iter().any(shell) {
+        Start::Engulfed
+    } else if scene.bodies.len() == 1 {
+        Start::Merged
+    } else {
+        Start::Touching
+    }
 }
 
 /// The centroid of liquid `l` along x, y, z [m] at each output.

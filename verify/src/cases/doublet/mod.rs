@@ -20,7 +20,7 @@ use super::analysis::{self, Analysis};
 use super::paper_values;
 use super::scene::{LiquidProps, SceneBuilder, MATTE, SLAG};
 use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
-use solver::scene::BodyShape;
+use solver::scene::{BodyShape, Cut};
 use std::path::Path;
 
 /// Which of the two paper sections.
@@ -52,9 +52,50 @@ impl Doublet {
     fn sigma12_values(&self, f: Fidelity) -> Vec<f64> {
         match (self.0, f) {
             (Pair::Equal, Fidelity::Smoke) => vec![0.4, 1.0],
-            (Pair::Equal, _) => vec![0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 1.0],
+            // the paper's values, and a sweep across 2σ1 = 0.8 N/m
+            (Pair::Equal, _) => vec![
+                0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.74, 0.76, 0.78, 0.8, 0.84, 0.9, 1.0,
+            ],
             (Pair::MatteSlag, Fidelity::Smoke) => vec![0.4],
             (Pair::MatteSlag, _) => vec![0.1, 0.2, 0.3, 0.4, 0.5, 0.6],
+        }
+    }
+
+    /// The σ12 [N/m] of the runs that start merged (one sphere cut into the two liquids): at
+    /// and either side of 2σ1, where the drops must stay together below and part above.
+    fn merged_sigma12_values(&self, f: Fidelity) -> Vec<f64> {
+        match (self.0, f) {
+            (Pair::Equal, Fidelity::Standard | Fidelity::Paper) => vec![0.7, 0.76, 0.78, 0.8],
+            _ => vec![],
+        }
+    }
+
+    /// `values` without those whose resolved pair table equals an earlier one's — the scenes
+    /// differ only in σ12, so those runs would be identical (σ12 ≥ σ1 + σ2 all give the pair
+    /// strength 0) — and those left out, each with the σ12 whose run it would repeat.
+    fn distinct(&self, f: Fidelity, values: Vec<f64>) -> (Vec<f64>, Vec<(f64, f64)>) {
+        let mut kept: Vec<(f64, Option<solver::physics::surface_tension::PairTable>)> = Vec::new();
+        let mut same = Vec::new();
+        for s in values {
+            // a scene the solver refuses is kept: its run reports the error
+            let pairs = solver::Model::from_scene(&self.scene(f, s))
+                .ok()
+                .map(|m| m.pairs);
+            match kept.iter().find(|(_, p)| pairs.is_some() && *p == pairs) {
+                Some((s0, _)) => same.push((s, *s0)),
+                None => kept.push((s, pairs)),
+            }
+        }
+        (kept.into_iter().map(|k| k.0).collect(), same)
+    }
+
+    /// The σ12 [N/m] of the runs that start engulfed (liquid 1 inside liquid 2): the
+    /// matte–slag tensions at which Eq. 24 says slag engulfs matte (0.1) or is on the boundary
+    /// (0.2), where paper A's own run ended as a lens.
+    fn engulfed_sigma12_values(&self, f: Fidelity) -> Vec<f64> {
+        match (self.0, f) {
+            (Pair::MatteSlag, Fidelity::Standard | Fidelity::Paper) => vec![0.1, 0.2],
+            _ => vec![],
         }
     }
 
@@ -66,15 +107,22 @@ impl Doublet {
         }
     }
 
-    fn end(f: Fidelity) -> f64 {
+    /// The run's end [s]: engulfing is slow, so the matte–slag runs at σ12 ≤ 0.2 N/m run
+    /// 100 ms as the paper's (whose σ12 = 0.1 run was still a lens then).
+    fn end(&self, f: Fidelity, sigma12: f64) -> f64 {
         match f {
             Fidelity::Smoke => 0.012,
+            Fidelity::Standard if self.0 == Pair::MatteSlag && sigma12 <= 0.2 + 1e-9 => 0.1,
             Fidelity::Standard => 0.03,
             Fidelity::Paper => 0.1,
         }
     }
 
     fn scene(&self, f: Fidelity, sigma12: f64) -> solver::Scene {
+        self.scene_started(f, sigma12, Start::Touching)
+    }
+
+    fn scene_started(&self, f: Fidelity, sigma12: f64, start: Start) -> solver::Scene {
         let (a, b) = self.liquids();
         // c² = 150 m²/s² as in the paper (§2.3); the cohesive compression stays below 1 %
         // for matte down to l0 = 0.06 mm (σ/(l0 ρ c²) · 1.75 = 1.7 % at the paper's l0)
@@ -82,17 +130,58 @@ impl Doublet {
             center: [x, 0.0, 0.0],
             radius: R0_M,
         };
-        SceneBuilder::new(Self::l0(f), 150f64.sqrt())
-            .time(Self::end(f), 1.0e-4)
+        let builder = SceneBuilder::new(Self::l0(f), 150f64.sqrt())
+            .time(self.end(f, sigma12), 1.0e-4)
             .fixed_dt((f == Fidelity::Paper).then_some(1.0e-6))
             .paper_effects()
             .liquid(&a)
             .liquid(&b)
-            .interface(a.name, b.name, sigma12)
-            .body("drop1", a.name, sphere(-R0_M))
-            .body("drop2", b.name, sphere(R0_M))
-            .build()
+            .interface(a.name, b.name, sigma12);
+        match start {
+            Start::Touching => {
+                builder
+                    .body("drop1", a.name, sphere(-R0_M))
+                    .body("drop2", b.name, sphere(R0_M))
+            }
+            // one sphere of twice a drop's volume, its halves the two liquids
+            Start::Merged => builder.cut_body(
+                "drop",
+                BodyShape::Sphere {
+                    center: [0.0; 3],
+                    radius: R0_M * 2f64.cbrt(),
+                },
+                Cut {
+                    point: [0.0; 3],
+                    normal: [1.0, 0.0, 0.0],
+                    liquids: [a.name.into(), b.name.into()],
+                },
+            ),
+            Start::Engulfed => builder.body("core", a.name, sphere(0.0)).body(
+                "shell",
+                b.name,
+                BodyShape::Shell {
+                    center: [0.0; 3],
+                    inner_radius: R0_M,
+                    outer_radius: R0_M * 2f64.cbrt(),
+                },
+            ),
+        }
+        .build()
     }
+}
+
+/// How a run starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Start {
+    /// Two spheres of radius R0 one spacing apart (the paper's start).
+    Touching,
+    /// One sphere of twice a drop's volume, cut in half into the two liquids: above the
+    /// separation limit the halves must part, below it stay together.
+    Merged,
+    /// A sphere of liquid 1 (radius R0) inside a shell of liquid 2 of the same volume: where
+    /// the touching start ends in another regime, the two starts tell a ground state from a
+    /// state the run has not left.
+    Engulfed,
 }
 
 /// Initial radius of each drop [m].
@@ -130,7 +219,10 @@ impl Case for Doublet {
         let per_drop = 4.0 / 3.0 * std::f64::consts::PI * (R0_M / l0).powi(3);
         let why = match f {
             Fidelity::Smoke => "R0/l0 = 5, 12 ms: a seconds-scale check that the doublet forms",
-            Fidelity::Standard => "R0/l0 = 8, 30 ms: the interface is 8 spacings across and the oscillation has decayed (G1G2 within 3 % of the analytic equilibrium at σ12 = 0.4); the paper's R0/l0 = 16.7 costs 10× more",
+            Fidelity::Standard => match self.0 {
+                Pair::Equal => "R0/l0 = 8, 30 ms: the interface is 8 spacings across and the oscillation has decayed (G1G2 within 3 % of the analytic equilibrium at σ12 = 0.4); the paper's R0/l0 = 16.7 costs 10× more. Beside the paper's σ12, a sweep across 2σ1 from touching drops and from one drop cut in two",
+                Pair::MatteSlag => "R0/l0 = 8, 30 ms (100 ms at σ12 ≤ 0.2, where engulfing is slow, each also started engulfed); the paper's R0/l0 = 16.7 costs 10× more",
+            },
             Fidelity::Paper => "the paper's l0 = 0.06 mm (19,430 per drop), dt = 1e-6 s, 0.1 s",
         };
         format!(
@@ -140,13 +232,22 @@ impl Case for Doublet {
         )
     }
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
-        self.sigma12_values(f)
-            .into_iter()
-            .map(|s| RunSpec {
-                id: format!("sigma12_{s:.2}"),
-                scene: self.scene(f, s),
-                snapshot_times_s: vec![],
-            })
+        let (touching, _) = self.distinct(f, self.sigma12_values(f));
+        let merged = self.merged_sigma12_values(f);
+        let engulfed = self.engulfed_sigma12_values(f);
+        let spec = |s: f64, start: Start| RunSpec {
+            id: match start {
+                Start::Touching => format!("sigma12_{s:.2}"),
+                Start::Merged => format!("merged_sigma12_{s:.2}"),
+                Start::Engulfed => format!("engulfed_sigma12_{s:.2}"),
+            },
+            scene: self.scene_started(f, s, start),
+            snapshot_times_s: vec![],
+        };
+        let touching = touching.into_iter().map(|s| spec(s, Start::Touching));
+        touching
+            .chain(merged.into_iter().map(|s| spec(s, Start::Merged)))
+            .chain(engulfed.into_iter().map(|s| spec(s, Start::Engulfed)))
             .collect()
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
@@ -168,6 +269,7 @@ impl Analysis for Doublet {
             pair: self.0,
             sigma_n_m: self.sigmas(),
             l0_m: Self::l0(f),
+            same_as: self.distinct(f, self.sigma12_values(f)).1,
         };
         judge.metrics(measured)
     }

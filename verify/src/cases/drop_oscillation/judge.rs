@@ -29,7 +29,7 @@ pub struct Reference {
 pub fn reference(m: &DropRun) -> Reference {
     let scene = &m.run.info.scene;
     let nu = MATTE.viscosity_pa_s / MATTE.density_kg_m3;
-    // the artificial viscosity's effective ν ≈ α h c/10 (Monaghan 1992; physics.md §3)
+    // the artificial viscosity's effective ν ≈ α h c/10 (Monaghan 1992; docs/model.md §3)
     let nu_av = artificial_viscosity_m2_s(scene);
     Reference {
         period_s: lamb::lamb_period(

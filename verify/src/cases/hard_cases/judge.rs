@@ -82,7 +82,7 @@ fn conservation(case: &str, m: &HardRun) -> [Metric; 2] {
     let (id, l0) = (&run.id, sc.discretisation.l0);
     let scale = m.mass_kg.first().copied().unwrap_or(0.0) * m.max_speed_m_s;
     // the EOS stores up to p_b²/(2ρc²) per volume at the cohesive pressure p_b ≈ 1.75σ/l0
-    // (physics.md §4); it is not in kinetic + interfacial energy and may flow into them
+    // (docs/model.md §4); it is not in kinetic + interfacial energy and may flow into them
     let c2 = sc.discretisation.sound_speed.powi(2);
     let stored: f64 = (sc.liquids.iter().zip(&m.initial_counts))
         .map(|(l, &n)| {
@@ -114,7 +114,7 @@ fn integrity(case: &str, m: &HardRun) -> Vec<Metric> {
     )
     .run(run);
     if let Some(n) = expected_bodies {
-        bodies = bodies.against(n as f64, Tolerance::exact("particles within 1.5 l0 of each other form one body (physics.md §7's interface distance); no spurious fragments"));
+        bodies = bodies.against(n as f64, Tolerance::exact("particles within 1.5 l0 of each other form one body (docs/model.md §7's interface distance); no spurious fragments"));
     }
     // clumping is judged on the drop at rest: during a violent relaxation particles pass within
     // l0/2 of each other for a while (the 5³ cube: 29 % at 3 ms, 0 % from 4 ms)

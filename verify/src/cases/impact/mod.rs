@@ -1,5 +1,5 @@
 //! A drop falls on a horizontal plate, spreads, oscillates and settles (Natsui 2016, Figs. 2–4;
-//! conditions in physics.md §8): water on glass (θ = 30°) and Teflon (90°), 2 mm from 2 mm;
+//! conditions in docs/model.md §8): water on glass (θ = 30°) and Teflon (90°), 2 mm from 2 mm;
 //! aluminium on alumina (90°), 70 mg from 4 mm; iron on alumina (125°), 5 mm from 5 mm.
 //!
 //! Recorded at every output ([`substrate::probe`]): height, wetted radius, the side-view contact
@@ -153,9 +153,9 @@ impl Case for Impact {
     }
     fn source(&self) -> &'static str {
         match self.0 {
-            Drop::Water => "Natsui et al. 2016 (ISIJ Int. 56), Table 1 and text; physics.md R19",
-            Drop::Aluminium => "Natsui et al. 2016 (ISIJ Int. 56), Fig. 2; physics.md R18",
-            Drop::Iron => "Natsui et al. 2016 (ISIJ Int. 56), Figs. 3–4; physics.md R17",
+            Drop::Water => "Natsui et al. 2016 (ISIJ Int. 56), Table 1 and text; docs/model.md R19",
+            Drop::Aluminium => "Natsui et al. 2016 (ISIJ Int. 56), Fig. 2; docs/model.md R18",
+            Drop::Iron => "Natsui et al. 2016 (ISIJ Int. 56), Figs. 3–4; docs/model.md R17",
         }
     }
     fn effects(&self) -> Option<DeclaredEffects> {

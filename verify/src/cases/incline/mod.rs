@@ -1,5 +1,5 @@
 //! A 2 mm water drop sliding down a plate inclined by 60°, glass (θ = 30°) and Teflon (90°)
-//! (Natsui 2016, Fig. 1; physics.md §8).
+//! (Natsui 2016, Fig. 1; docs/model.md §8).
 //!
 //! The plate is no-slip (cases/substrate: on a free-slip plate the drop accelerates at g sin 60°
 //! without end). It stays horizontal and gravity is tilted by 60°: `g = 9.81 (sin 60°, 0, −cos 60°)`,

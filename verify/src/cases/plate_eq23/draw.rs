@@ -1,23 +1,88 @@
 //! The plots of the drop on a plate: the side view of each final state, the Eq. 23 maps of
-//! Fig. 3 with the simulated points, and θ12 along θ31 = 90°.
+//! Fig. 3 with the simulated points, θ12 along θ31 = 90°, and measured θ12 against Eq. 23
+//! from the typed and from the measured Young angles.
 
-use super::measure::PlateRun;
-use super::{SIGMA12, THETA31_DEG};
+use super::measure::{Measured, PlateRun};
+use super::SIGMA12;
 use crate::analytic::eq23::{self, SolidContact};
 use crate::cases::views;
 use crate::report::plot::{self, Heatmap, ParticleView, Plot, Series, SeriesKind};
 use std::path::Path;
 
 /// Draws every plot of the case into `dir`, the particles seen at spacing `l0_m` [m].
-pub fn plots(runs: &[PlateRun], l0_m: f64, dir: &Path) -> anyhow::Result<()> {
+pub fn plots(measured: &Measured, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
+    let runs = &measured.binaries;
     for m in runs {
         side_view(m, l0_m, dir)?;
+    }
+    for s in &measured.singles {
+        side_view_of(s.run, l0_m, dir)?;
     }
     let (identical, matte_slag): (Vec<&PlateRun>, Vec<&PlateRun>) =
         runs.iter().partition(|m| m.run.id.starts_with("identical"));
     map("fig3a", (0.4, 0.4), &identical, dir)?;
     map("fig3b", (0.4, 0.2), &matte_slag, dir)?;
-    theta12_at_theta31_90(&identical, dir)
+    theta12_at_theta31_90(&identical, dir)?;
+    measured_against_eq23(measured, dir)
+}
+
+/// Measured θ12 against Eq. 23's, from the typed Young angles and from the angles the single
+/// drops measured; the diagonal is agreement.
+fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> {
+    let mut typed = Vec::new();
+    let mut from_measured = Vec::new();
+    for m in &measured.binaries {
+        let theta = measured_theta12(m);
+        if !theta.is_finite() {
+            continue;
+        }
+        let (s1, s2) = m.sigma_n_m;
+        if let Ok(eq23::SolidContact::TripleLine { theta12_deg }) =
+            eq23::solid_contact(s1, s2, SIGMA12, m.theta31_deg, m.theta23_deg)
+        {
+            typed.push((theta12_deg, theta));
+        }
+        let ingredients = (
+            measured.ingredient(s1, m.theta31_deg),
+            measured.ingredient(s2, m.theta23_deg),
+        );
+        if let (Some(t31), Some(t23)) = ingredients {
+            if let Ok(c) = eq23::solid_contact(s1, s2, SIGMA12, t31, t23) {
+                from_measured.push((c.theta12_deg(), theta));
+            }
+        }
+    }
+    plot::draw(
+        &Plot {
+            title: "θ12 measured against Eq. 23 (0°/180°: Eq. 23 has no line)".into(),
+            x_label: "θ12 of Eq. 23 [deg]".into(),
+            y_label: "θ12 measured [deg]".into(),
+            series: vec![
+                Series {
+                    label: "agreement".into(),
+                    points: vec![(0.0, 0.0), (180.0, 180.0)],
+                    kind: SeriesKind::Dashed,
+                    color: 0,
+                },
+                Series {
+                    label: "Eq. 23 at the typed Young angles".into(),
+                    points: typed,
+                    kind: SeriesKind::Markers,
+                    color: 1,
+                },
+                Series {
+                    label: "Eq. 23 at the angles single drops measured".into(),
+                    points: from_measured,
+                    kind: SeriesKind::Markers,
+                    color: 2,
+                },
+            ],
+            x_range: Some((0.0, 180.0)),
+            y_range: Some((0.0, 180.0)),
+            hlines: vec![],
+        },
+        &dir.join("theta12_measured_vs_eq23"),
+    )
 }
 
 /// The measured θ12 [deg] of a run: NaN where none was measured.
@@ -30,26 +95,29 @@ fn measured_theta12(m: &PlateRun) -> f64 {
 
 /// The final state, slice |y| < l0 through the axis.
 fn side_view(m: &PlateRun, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
-    let liquids = &m.run.info.scene.liquids;
+    side_view_of(m.run, l0_m, dir)
+}
+
+/// The final state of `run` (one or two liquids), slice |y| < l0 through the axis.
+fn side_view_of(run: &crate::suite::RunData, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
+    let liquids = &run.info.scene.liquids;
+    let mut categories: Vec<String> = liquids.iter().map(|l| l.name.clone()).collect();
+    categories.push("plate".into());
     plot::draw_particles(
         &ParticleView {
             title: format!(
                 "{} at t = {:.0} ms (slice |y| < l0)",
-                m.run.id,
-                m.run.last.time_s * 1e3
+                run.id,
+                run.last.time_s * 1e3
             ),
             x_label: "x [mm]".into(),
             y_label: "z [mm]".into(),
-            points: views::phase_slice(&m.run.last, l0_m, 2.5e-3, 2),
-            categories: vec![
-                liquids[0].name.clone(),
-                liquids[1].name.clone(),
-                "plate".into(),
-            ],
+            points: views::phase_slice(&run.last, l0_m, 2.5e-3, liquids.len()),
+            categories,
             rects: vec![],
             marker_px: 4,
         },
-        &dir.join(format!("side_{}", m.run.id)),
+        &dir.join(format!("side_{}", run.id)),
     )
 }
 
@@ -77,7 +145,7 @@ fn map(name: &str, (s1, s2): (f64, f64), runs: &[&PlateRun], dir: &Path) -> anyh
                 String::new()
             };
             (
-                THETA31_DEG,
+                m.theta31_deg,
                 m.theta23_deg,
                 format!("sim: {}{angle}", m.seen),
             )
@@ -107,7 +175,7 @@ fn theta12_at_theta31_90(identical: &[&PlateRun], dir: &Path) -> anyhow::Result<
         .map(|th| {
             (
                 th,
-                eq23::solid_contact(0.4, 0.4, SIGMA12, THETA31_DEG, th)
+                eq23::solid_contact(0.4, 0.4, SIGMA12, 90.0, th)
                     .map(|c| c.theta12_deg())
                     .unwrap_or(f64::NAN),
             )
@@ -115,7 +183,7 @@ fn theta12_at_theta31_90(identical: &[&PlateRun], dir: &Path) -> anyhow::Result<
         .collect();
     let measured: Vec<(f64, f64)> = identical
         .iter()
-        .filter(|m| m.theta12_deg.is_some())
+        .filter(|m| m.theta12_deg.is_some() && m.theta31_deg == 90.0)
         .map(|m| (m.theta23_deg, measured_theta12(m)))
         .collect();
     plot::draw(

@@ -1,52 +1,153 @@
-//! The metrics of the drop on a plate: which liquids touch the plate against Eq. 23, θ12
-//! against Eq. 23 where a line exists, and the height.
+//! The metrics of the drops on a plate: which liquids touch the plate against Eq. 23, θ12
+//! against Eq. 23 where a line exists — from the typed Young angles, and from the angles the
+//! single drops of the same setting measured (so an error of the ingredients is told apart
+//! from an error at the triple line) — each single drop's angle, and the height.
 
-use super::measure::PlateRun;
-use super::Prediction;
+use super::measure::{Measured, PlateRun, SingleRun};
+use super::{Prediction, SIGMA12};
+use crate::analytic::eq23;
+use crate::measure::geometry;
 use crate::suite::{Metric, Tolerance};
 
-/// The tolerance of θ12 at a solid/liquid/liquid line [deg].
-pub fn triple_line_tolerance() -> Tolerance {
-    Tolerance::absolute(
-        5.4,
-        "twice the fit's own error on voxelised tilted interfaces at R/l0 = 8 (2.7°, measure::geometry tests)",
-    )
+/// The tolerance of θ12 at a solid/liquid/liquid line [deg] for a drop of `r_over_l0`
+/// spacings: twice the line fit's own error bound (measure::geometry tests); `None` where no
+/// test bounds it (below R/l0 = 8: the angle is reported, not judged).
+pub fn triple_line_tolerance(r_over_l0: f64) -> Option<Tolerance> {
+    geometry::triple_line_angle_error_deg(r_over_l0).map(|e| {
+        Tolerance::absolute(
+            2.0 * e,
+            format!("twice the line fit's own error bound on voxelised tilted interfaces at R/l0 = {r_over_l0:.0} ({e}°, measure::geometry tests)"),
+        )
+    })
 }
 
-/// The metrics of one run.
-pub fn run_metrics(case: &str, m: &PlateRun) -> anyhow::Result<Vec<Metric>> {
-    let prediction = Prediction::of(m.sigma_n_m, m.theta23_deg)?;
-    let mut out = vec![contact(case, m, &prediction)];
-    if let (Some(theta12_ref), Some(measured)) = (prediction.line_to_measure(), &m.theta12_deg) {
+/// `metric` judged against `reference` where a tolerance exists, else only reported with it.
+pub fn against_if(metric: Metric, reference: f64, tolerance: Option<Tolerance>) -> Metric {
+    match tolerance {
+        Some(t) => metric.against(reference, t),
+        None => metric.note(format!(
+            "reference {reference:.1}; no error bound of the measurement at this resolution: not judged"
+        )),
+    }
+}
+
+/// What the metrics are judged with.
+pub struct Judge<'a> {
+    /// The case's name.
+    pub case: &'a str,
+    /// Drop radius over particle spacing.
+    pub r_over_l0: f64,
+}
+
+impl Judge<'_> {
+    /// Every metric of the case.
+    pub fn metrics(&self, m: &Measured) -> anyhow::Result<Vec<Metric>> {
+        let mut out = Vec::new();
+        for b in &m.binaries {
+            out.extend(self.binary(b, m)?);
+        }
+        for s in &m.singles {
+            out.push(self.single(s));
+        }
+        Ok(out)
+    }
+
+    /// The error bound of a single drop's sessile angle at `theta_deg` [deg] (None: not
+    /// bounded).
+    fn sessile_error(&self, theta_deg: f64) -> Option<f64> {
+        geometry::sessile_angle_error_deg(self.r_over_l0, theta_deg)
+    }
+
+    /// A single drop's angle against its typed Young angle.
+    fn single(&self, s: &SingleRun) -> Metric {
+        let tol = self.sessile_error(s.typed_deg).map(|e| Tolerance::absolute(2.0 * e, format!("twice the sessile fit's own error bound on voxelised caps at R/l0 = {:.0} ({e}°, measure::geometry tests)", self.r_over_l0)));
+        let metric = Metric::new(
+            self.case,
+            format!("contact angle {}", s.run.id),
+            "deg",
+            *s.measured_deg.as_ref().unwrap_or(&f64::NAN),
+        );
+        against_if(metric, s.typed_deg, tol)
+        .run(s.run)
+        .note(match &s.measured_deg {
+            Ok(_) => format!("{}sphere fit of the free surface within 6 l0 of the plate, at t = {:.0} ms: an ingredient of Eq. 23", s.run.status_note(), s.run.last.time_s * 1e3),
+            Err(e) => format!("{}not measurable: {e}", s.run.status_note()),
+        })
+    }
+
+    /// The metrics of one binary drop.
+    fn binary(&self, b: &PlateRun, m: &Measured) -> anyhow::Result<Vec<Metric>> {
+        let prediction = Prediction::of(b.sigma_n_m, b.theta31_deg, b.theta23_deg)?;
+        let mut out = vec![contact(self.case, b, &prediction)];
+        if let (Some(theta12_ref), Some(measured)) = (prediction.line_to_measure(), &b.theta12_deg)
+        {
+            let value = *measured.as_ref().unwrap_or(&f64::NAN);
+            let metric = Metric::new(self.case, format!("θ12 {}", b.run.id), "deg", value);
+            out.push(
+                against_if(metric, theta12_ref, triple_line_tolerance(self.r_over_l0))
+                    .run(b.run)
+                    .note(match measured {
+                        Ok(_) => "fit of the 1–2 interface in a band above the plate, angle inside liquid 1; reference: Eq. 23 from the typed Young angles".to_string(),
+                        Err(e) => format!("not measurable: {e}"),
+                    }),
+            );
+            out.extend(self.against_ingredients(b, m, value, theta12_ref));
+        }
         out.push(
             Metric::new(
-                case,
-                format!("θ12 {}", m.run.id),
-                "deg",
-                *measured.as_ref().unwrap_or(&f64::NAN),
+                self.case,
+                format!("height {}", b.run.id),
+                "mm",
+                b.contact.height_m * 1e3,
             )
-            .against(theta12_ref, triple_line_tolerance())
-            .run(m.run)
-            .note(match measured {
-                Ok(_) => {
-                    "fit of the 1–2 interface in a band above the plate, angle inside liquid 1"
-                        .to_string()
-                }
-                Err(e) => format!("not measurable: {e}"),
-            }),
+            .run(b.run)
+            .note("top of the drop above the plate at the end"),
         );
+        Ok(out)
     }
-    out.push(
-        Metric::new(
-            case,
-            format!("height {}", m.run.id),
-            "mm",
-            m.contact.height_m * 1e3,
+
+    /// θ12 against Eq. 23 evaluated at the Young angles the single drops measured: the error
+    /// left at the triple line once the ingredients' errors are taken out. The tolerance adds
+    /// the single fits' error bounds, amplified by Eq. 23's sensitivity, to the line fit's
+    /// (in quadrature, twice, as the other angle tolerances).
+    fn against_ingredients(
+        &self,
+        b: &PlateRun,
+        m: &Measured,
+        measured: f64,
+        typed_theta12: f64,
+    ) -> Option<Metric> {
+        let (s1, s2) = b.sigma_n_m;
+        let t31 = m.ingredient(s1, b.theta31_deg)?;
+        let t23 = m.ingredient(s2, b.theta23_deg)?;
+        let name = format!("θ12 from measured angles {}", b.run.id);
+        let metric = Metric::new(self.case, name, "deg", measured).run(b.run);
+        let contact = match eq23::solid_contact(s1, s2, SIGMA12, t31, t23) {
+            Ok(c) => c,
+            Err(e) => return Some(metric.note(format!("Eq. 23 at the measured angles: {e}"))),
+        };
+        let eq23::SolidContact::TripleLine { theta12_deg } = contact else {
+            return Some(metric.note(format!(
+                "Eq. 23 at the measured angles θ31 = {t31:.1}°, θ23 = {t23:.1}° has no line (one liquid spreads under the other; typed: θ12 = {typed_theta12:.1}°)"
+            )));
+        };
+        let (Some(e31), Some(e23), Some(e_l)) = (
+            self.sessile_error(t31),
+            self.sessile_error(t23),
+            geometry::triple_line_angle_error_deg(self.r_over_l0),
+        ) else {
+            return Some(metric.note(format!("Eq. 23 at the measured angles θ31 = {t31:.1}°, θ23 = {t23:.1}° gives {theta12_deg:.1}°; no error bound of the fits at these angles: not judged")));
+        };
+        let Ok((d31, d23)) = eq23::theta12_sensitivity(s1, s2, SIGMA12, t31, t23) else {
+            return Some(metric.note("Eq. 23 at the measured angles gives θ12 at 0° or 180°"));
+        };
+        let e = (e_l.powi(2) + (d31 * e31).powi(2) + (d23 * e23).powi(2)).sqrt();
+        Some(
+            metric
+                .against(theta12_deg, Tolerance::absolute(2.0 * e, format!("twice the line fit's bound ({e_l}°) and the single fits' ({e31}°, {e23}°) amplified by Eq. 23 (∂θ12/∂θ31 = {d31:.2}, ∂θ12/∂θ23 = {d23:.2}), in quadrature")))
+                .note(format!("reference: Eq. 23 at the angles the single drops measured, θ31 = {t31:.1}°, θ23 = {t23:.1}° (typed {:.0}°, {:.0}° → {typed_theta12:.1}°)", b.theta31_deg, b.theta23_deg)),
         )
-        .run(m.run)
-        .note("top of the drop above the plate at the end"),
-    );
-    Ok(out)
+    }
 }
 
 /// Which liquids touch the plate against Eq. 23.
@@ -67,8 +168,10 @@ fn contact(case: &str, m: &PlateRun, prediction: &Prediction) -> Metric {
     Metric::check(case, format!("contact {}", m.run.id), "match", ok, "the contact regime matches Eq. 23 or not")
         .run(m.run)
         .note(format!(
-            "{}Eq. 23: cos θ12 = {cos12:.3} → {}; seen at t = {:.0} ms: {seen} (plate-layer shares {:.2} / {:.2})",
+            "{}Eq. 23 (θ31 = {:.0}°, θ23 = {:.0}°): cos θ12 = {cos12:.3} → {}; seen at t = {:.0} ms: {seen} (plate-layer shares {:.2} / {:.2})",
             m.run.status_note(),
+            m.theta31_deg,
+            m.theta23_deg,
             prediction.words(),
             m.run.last.time_s * 1e3,
             shares.first().copied().unwrap_or(f64::NAN),

@@ -1,5 +1,6 @@
 //! What a run of the drop on a plate gives: which liquids wet the plate, the drop's height,
-//! and θ12 at the solid/liquid/liquid line where Eq. 23 has one.
+//! and θ12 at the solid/liquid/liquid line where Eq. 23 has one; for a single liquid's drop,
+//! its contact angle (an ingredient of Eq. 23).
 
 use super::Prediction;
 use crate::measure::geometry::{self, WallContact};
@@ -12,7 +13,9 @@ pub struct PlateRun<'r> {
     pub run: &'r RunData,
     /// Surface tensions σ1, σ2 of its liquids [N/m].
     pub sigma_n_m: (f64, f64),
-    /// Contact angle θ23 of liquid 2 on the plate [deg].
+    /// Young angle θ31 of liquid 1 on the plate, as typed [deg].
+    pub theta31_deg: f64,
+    /// Young angle θ23 of liquid 2 on the plate, as typed [deg].
     pub theta23_deg: f64,
     /// Wetted shares of the plate and the drop's height.
     pub contact: WallContact,
@@ -23,21 +26,83 @@ pub struct PlateRun<'r> {
     pub theta12_deg: Option<Result<f64, String>>,
 }
 
-/// Measures a run at spacing `l0_m` [m].
+/// A single liquid's drop on the plate, measured on its final state.
+pub struct SingleRun<'r> {
+    /// The run.
+    pub run: &'r RunData,
+    /// Its liquid's surface tension [N/m].
+    pub sigma_n_m: f64,
+    /// Its Young angle on the plate, as typed [deg].
+    pub typed_deg: f64,
+    /// Its contact angle [deg], or why it could not be measured.
+    pub measured_deg: Result<f64, String>,
+}
+
+/// The case's runs, measured: binary drops and single drops.
+pub struct Measured<'r> {
+    /// Drops of two liquids.
+    pub binaries: Vec<PlateRun<'r>>,
+    /// Drops of one liquid.
+    pub singles: Vec<SingleRun<'r>>,
+}
+
+impl Measured<'_> {
+    /// The measured contact angle [deg] of the liquid of surface tension `sigma_n_m` [N/m]
+    /// typed at `typed_deg`, if its single drop was run and measured.
+    pub fn ingredient(&self, sigma_n_m: f64, typed_deg: f64) -> Option<f64> {
+        self.singles
+            .iter()
+            .find(|s| s.sigma_n_m == sigma_n_m && s.typed_deg == typed_deg)
+            .and_then(|s| s.measured_deg.as_ref().ok().copied())
+    }
+}
+
+/// Measures every run at spacing `l0_m` [m]: runs with one liquid are single drops.
+pub fn measure(runs: &[RunData], l0_m: f64) -> anyhow::Result<Measured<'_>> {
+    let mut m = Measured {
+        binaries: Vec::new(),
+        singles: Vec::new(),
+    };
+    for run in runs {
+        if run.info.scene.liquids.len() == 1 {
+            m.singles.push(single_run(run, l0_m));
+        } else {
+            m.binaries.push(plate_run(run, l0_m)?);
+        }
+    }
+    Ok(m)
+}
+
+/// Measures a single drop at spacing `l0_m` [m]: the sessile angle on the plate (z = 0).
+fn single_run(run: &RunData, l0_m: f64) -> SingleRun<'_> {
+    let sc = &run.info.scene;
+    let cloud = run.last.cloud(l0_m);
+    let classes = surface::classify(&cloud);
+    SingleRun {
+        run,
+        sigma_n_m: sc.liquids[0].surface_tension.unwrap_or(0.0),
+        typed_deg: sc.solids[0].contact_angles[&sc.liquids[0].name],
+        measured_deg: geometry::sessile_contact_angle(&cloud, &classes, 0, 0.0),
+    }
+}
+
+/// Measures a binary drop at spacing `l0_m` [m].
 pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
     let sc = &run.info.scene;
     let sigma_n_m = (
         sc.liquids[0].surface_tension.unwrap_or(0.0),
         sc.liquids[1].surface_tension.unwrap_or(0.0),
     );
+    let theta31_deg = sc.solids[0].contact_angles[&sc.liquids[0].name];
     let theta23_deg = sc.solids[0].contact_angles[&sc.liquids[1].name];
-    let prediction = Prediction::of(sigma_n_m, theta23_deg)?;
+    let prediction = Prediction::of(sigma_n_m, theta31_deg, theta23_deg)?;
     let cloud = run.last.cloud(l0_m);
     let classes = surface::classify(&cloud);
     let contact = geometry::wall_contact(&cloud, 0.0);
     Ok(PlateRun {
         run,
         sigma_n_m,
+        theta31_deg,
         theta23_deg,
         seen: seen_words(&contact.wetted_fraction),
         theta12_deg: prediction

@@ -37,7 +37,7 @@ pub const SLAG: LiquidProps = LiquidProps {
 };
 
 /// The sound speed [m/s] that keeps the potential's cohesive pressure (≈ 1.75 σ/l0 at
-/// r_e = 4.2 l0, physics.md §4) to a compression of 1 %: `c² = 1.75 σ / (l0 · 0.01 ρ)`, and at
+/// r_e = 4.2 l0, docs/model.md §4) to a compression of 1 %: `c² = 1.75 σ / (l0 · 0.01 ρ)`, and at
 /// least `floor_m_s`.
 pub fn sound_speed_for(liquid: &LiquidProps, l0_m: f64, floor_m_s: f64) -> f64 {
     (1.75 * liquid.surface_tension_n_m / (l0_m * 0.01 * liquid.density_kg_m3))

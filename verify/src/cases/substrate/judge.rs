@@ -38,7 +38,7 @@ pub fn inside_plate_metric(case: &str, run: &RunData) -> Metric {
     )
     .against(
         0.0,
-        Tolerance::exact("none may enter a wall (issue 5's invariant)"),
+        Tolerance::exact("none may enter a wall: the wall-entry invariant (a liquid particle never crosses a wall's surface)"),
     )
     .run(run)
     .note(format!(

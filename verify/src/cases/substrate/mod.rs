@@ -1,4 +1,4 @@
-//! What the cases of paper B (Natsui et al. 2016, ISIJ Int. 56, 1297–1299; physics.md §8) share:
+//! What the cases of paper B (Natsui et al. 2016, ISIJ Int. 56, 1297–1299; docs/model.md §8) share:
 //! its materials, its discretisation setting, the scene of a drop above a plate
 //! ([`FallingDrop`]), the values recorded at every output ([`Probe`]), their statistics, the
 //! metric of liquid inside the plate, and the time histories and views drawn from them.
@@ -39,9 +39,9 @@ pub use stats::{settling_time, tail_stats};
 
 use super::scene::LiquidProps;
 
-/// Gravity [m/s²] (R17 of physics.md uses 9.81).
+/// Gravity [m/s²] (R17 of docs/model.md uses 9.81).
 pub const G_M_S2: f64 = 9.81;
-/// Water at 298 K (paper B Table 1; μ 0.89 mPa·s, the printed 0.089 corrected, physics.md).
+/// Water at 298 K (paper B Table 1; μ 0.89 mPa·s, the printed 0.089 corrected, docs/model.md).
 pub const WATER: LiquidProps = LiquidProps {
     name: "water",
     density_kg_m3: 997.0,

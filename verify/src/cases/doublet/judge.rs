@@ -16,8 +16,6 @@ pub struct Judge<'a> {
     pub pair: Pair,
     /// Surface tensions σ1, σ2 of the two liquids [N/m].
     pub sigma_n_m: (f64, f64),
-    /// Particle spacing [m].
-    pub l0_m: f64,
     /// σ12 values [N/m] not simulated because their model equals that of another σ12 (the
     /// second), so their runs would be identical.
     pub same_as: Vec<(f64, f64)>,
@@ -28,7 +26,10 @@ impl Judge<'_> {
     pub fn metrics(&self, runs: &[DoubletRun]) -> anyhow::Result<Vec<Metric>> {
         let mut out = Vec::new();
         // the merged starts are judged only on parting (below)
-        for m in runs.iter().filter(|m| m.start == Start::Touching) {
+        for m in runs
+            .iter()
+            .filter(|m| matches!(m.start, Start::Touching | Start::Fine))
+        {
             out.extend(self.run_metrics(m)?);
         }
         if self.pair == Pair::Equal {
@@ -98,6 +99,7 @@ impl Judge<'_> {
             Start::Touching => "touching start",
             Start::Merged => "merged start",
             Start::Engulfed => "engulfed start",
+            Start::Fine => "touching start, R0/l0 = 16.7",
         };
         let mut out = Vec::new();
         if start == Start::Merged {
@@ -150,6 +152,15 @@ impl Judge<'_> {
         out
     }
 
+    /// A run's σ12 as its metrics' names show it, with the resolution where it is not the
+    /// case's own.
+    fn tag(&self, m: &DoubletRun) -> String {
+        match m.start {
+            Start::Fine => format!("{} (R0/l0 = {:.1})", S12(m.sigma12_n_m), R0_M / m.l0_m),
+            _ => S12(m.sigma12_n_m).to_string(),
+        }
+    }
+
     fn run_metrics(&self, m: &DoubletRun) -> anyhow::Result<Vec<Metric>> {
         let (s1, s2) = self.sigma_n_m;
         let regime = neumann::regime(s1, s2, m.sigma12_n_m).map_err(anyhow::Error::msg)?;
@@ -171,19 +182,19 @@ impl Judge<'_> {
         let (s12, status) = (m.sigma12_n_m, m.run.status_note());
         let (g_eq, g_sd) = (m.separation.equilibrium, m.separation.residual);
         let metric =
-            Metric::new(self.case, format!("G1G2/R0 σ12={}", S12(s12)), "-", g_eq).run(m.run);
+            Metric::new(self.case, format!("G1G2/R0 σ12={}", self.tag(m)), "-", g_eq).run(m.run);
         let v0 = drop_volume_m3();
         if regime == Regime::PointContact {
             // σ12 ≥ σ1 + σ2 (Eq. 24–25): no lens; the drops touch at a point or part
-            let parted = g_eq >= 2.0 - self.l0_m / R0_M;
+            let parted = g_eq >= 2.0 - m.l0_m / R0_M;
             vec![
-                Metric::check(self.case, format!("separation σ12={}", S12(s12)), "match", parted, "point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not")
+                Metric::check(self.case, format!("separation σ12={}", self.tag(m)), "match", parted, "point contact or parting (G1G2/R0 ≥ 2 less one spacing) or not")
                     .run(m.run)
                     .note(format!("{status}G1G2/R0 = {g_eq:.3} at the end (Eq. 25: the liquids separate if σ12 ≥ 2σ1)")),
                 metric.note(format!("{status}mean over the last quarter (±{g_sd:.3}); σ12 ≥ σ1 + σ2: touching spheres give 2, parting more")),
             ]
         } else if let Ok(d) = neumann::doublet(s1, s2, s12, v0, v0) {
-            vec![metric.against(d.g1g2_m / R0_M, self.g1g2_tolerance(g_sd)).note(format!("{status}mean over the last quarter of the run (residual oscillation ±{g_sd:.3}); reference: the analytic doublet (spherical caps at the Neumann angles, equal volumes)"))]
+            vec![metric.against(d.g1g2_m / R0_M, self.g1g2_tolerance(g_sd, m.l0_m)).note(format!("{status}mean over the last quarter of the run (residual oscillation ±{g_sd:.3}); reference: the analytic doublet (spherical caps at the Neumann angles, equal volumes)"))]
         } else {
             vec![metric.note(format!(
                 "{status}mean over the last quarter (±{g_sd:.3}); no lens: complete engulfing"
@@ -193,8 +204,8 @@ impl Judge<'_> {
 
     /// The equilibrium is known to half a particle spacing, and no better than the oscillation
     /// left at the end of the run (standard deviation `sd` of the last quarter).
-    fn g1g2_tolerance(&self, sd: f64) -> Tolerance {
-        let half_spacing = 0.5 * self.l0_m / R0_M;
+    fn g1g2_tolerance(&self, sd: f64, l0_m: f64) -> Tolerance {
+        let half_spacing = 0.5 * l0_m / R0_M;
         Tolerance::absolute(
             half_spacing + 2.0 * sd,
             format!(
@@ -206,13 +217,13 @@ impl Judge<'_> {
 
     /// The oscillation of G1G2(t): the fit's period and damping, and the paper's definitions.
     fn oscillation(&self, m: &DoubletRun) -> Vec<Metric> {
-        let (s12, sep) = (m.sigma12_n_m, &m.separation);
+        let sep = &m.separation;
         let mut out = Vec::new();
         if let Some(fit) = &sep.fit {
             out.push(
                 Metric::new(
                     self.case,
-                    format!("G1G2 period σ12={}", S12(s12)),
+                    format!("G1G2 period σ12={}", self.tag(m)),
                     "ms",
                     fit.period_s * 1e3,
                 )
@@ -222,7 +233,7 @@ impl Judge<'_> {
             out.push(
                 Metric::new(
                     self.case,
-                    format!("G1G2 damping σ12={}", S12(s12)),
+                    format!("G1G2 damping σ12={}", self.tag(m)),
                     "1/s",
                     fit.damping_rate_per_s,
                 )
@@ -231,21 +242,21 @@ impl Judge<'_> {
             );
         }
         if let Some(hp) = sep.paper_half_period_s {
-            out.push(Metric::new(self.case, format!("half-period (paper's definition) σ12={}", S12(s12)), "ms", hp * 1e3).run(m.run).note(format!("minimum to next maximum of G1G2 after {} extrema (the paper: after three oscillations)", sep.paper_skip)));
+            out.push(Metric::new(self.case, format!("half-period (paper's definition) σ12={}", self.tag(m)), "ms", hp * 1e3).run(m.run).note(format!("minimum to next maximum of G1G2 after {} extrema (the paper: after three oscillations)", sep.paper_skip)));
         }
         if let Some(dr) = sep.paper_damping_per_s {
-            out.push(Metric::new(self.case, format!("damping (paper's definition) σ12={}", S12(s12)), "1/s", dr).run(m.run).note("fall of (max − min) of G1G2/R0 per half-period, divided by the half-period (Natsui 2021 §3.1.3)"));
+            out.push(Metric::new(self.case, format!("damping (paper's definition) σ12={}", self.tag(m)), "1/s", dr).run(m.run).note("fall of (max − min) of G1G2/R0 per half-period, divided by the half-period (Natsui 2021 §3.1.3)"));
         }
         out
     }
 
     /// The regime of the final state against the Neumann inequalities.
     fn regime(&self, m: &DoubletRun, regime: Regime) -> Metric {
-        let (s12, seen) = (m.sigma12_n_m, m.regime_seen);
+        let seen = m.regime_seen;
         let (expected, accepted) = expected_regime(regime);
         Metric::check(
             self.case,
-            format!("regime σ12={}", S12(s12)),
+            format!("regime σ12={}", self.tag(m)),
             "match",
             accepted.contains(&seen),
             "a regime either matches the Neumann inequalities or not",
@@ -270,11 +281,11 @@ impl Judge<'_> {
             Err(e) => {
                 return Ok(vec![Metric::new(
                     self.case,
-                    format!("θ12 σ12={}", S12(s12)),
+                    format!("θ12 σ12={}", self.tag(m)),
                     "deg",
                     f64::NAN,
                 )
-                .against(d.theta12_deg, self.angle_tolerance("θ12", s12))
+                .against(d.theta12_deg, self.angle_tolerance("θ12", s12, m.l0_m))
                 .run(m.run)
                 .note(format!("angles could not be measured: {e}"))])
             }
@@ -286,12 +297,12 @@ impl Judge<'_> {
         ]
         .into_iter()
         .map(|(name, val, reference)| {
-            Metric::new(self.case, format!("{name} σ12={}", S12(s12)), "deg", val).against(reference, self.angle_tolerance(name, s12)).run(m.run).note("sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids")
+            Metric::new(self.case, format!("{name} σ12={}", self.tag(m)), "deg", val).against(reference, self.angle_tolerance(name, s12, m.l0_m)).run(m.run).note("sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids")
         })
         .collect();
         out.push(
-            Metric::new(self.case, format!("Eq. 27 residual σ12={}", S12(s12)), "%", 100.0 * an.eq27_residual)
-                .against(0.0, self.eq27_tolerance(s12, (d.theta1_deg, d.theta2_deg, d.theta12_deg)))
+            Metric::new(self.case, format!("Eq. 27 residual σ12={}", self.tag(m)), "%", 100.0 * an.eq27_residual)
+                .against(0.0, self.eq27_tolerance(s12, m.l0_m, (d.theta1_deg, d.theta2_deg, d.theta12_deg)))
                 .paper(paper_values::lookup("matte_slag_doublet", "sigma12_n_m", s12, "eq27_residual_percent"))
                 .run(m.run)
                 .note(format!("(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1 from the measured angles; vector residual |Σσt|/σ1 = {:.1} %", 100.0 * an.vector_residual)),
@@ -303,8 +314,8 @@ impl Judge<'_> {
     /// (measure::geometry tests, 4 lattice shifts × 3 axes): at R0/l0 = 8, θ1/θ2 2.5°, θ12 4.8°
     /// (σ12 ≤ 0.4) and 13.7° (σ12 = 0.5: a nearly flat interface voxelises in steps); at
     /// R0/l0 = 16, 1.05°, 1.1° and 5.2°.
-    fn angle_tolerance(&self, what: &str, s12: f64) -> Tolerance {
-        let fine = R0_M / self.l0_m >= 16.0;
+    fn angle_tolerance(&self, what: &str, s12: f64, l0_m: f64) -> Tolerance {
+        let fine = R0_M / l0_m >= 16.0;
         let method_error = match (what, fine) {
             ("θ12", false) if s12 > 0.45 => 13.7,
             ("θ12", false) => 4.8,
@@ -322,9 +333,9 @@ impl Judge<'_> {
     /// The Eq. 27 residual's tolerance [%]: the angle measurement's own errors (as in
     /// [`Self::angle_tolerance`]) carried through `(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1`
     /// at the analytic angles `(θ1, θ2, θ12)` [deg], in quadrature, twice.
-    fn eq27_tolerance(&self, s12: f64, (t1, t2, t12): (f64, f64, f64)) -> Tolerance {
+    fn eq27_tolerance(&self, s12: f64, l0_m: f64, (t1, t2, t12): (f64, f64, f64)) -> Tolerance {
         let (s1, s2) = self.sigma_n_m;
-        let e = |what: &str| self.angle_tolerance(what, s12).abs / 2.0;
+        let e = |what: &str| self.angle_tolerance(what, s12, l0_m).abs / 2.0;
         let term = |s: f64, t: f64, what: &str| s * t.to_radians().sin() * e(what).to_radians();
         let sd = (term(s1, t1, "θ1").powi(2)
             + term(s2, t2, "θ2").powi(2)

@@ -19,6 +19,8 @@ pub struct DoubletRun<'r> {
     pub sigma12_n_m: f64,
     /// How it started.
     pub start: Start,
+    /// Its particle spacing [m].
+    pub l0_m: f64,
     /// The liquid-1 particles closer than 1.5 l0 to a liquid-2 particle at the end: the
     /// contact between the drops (none when apart; a few at a point contact).
     pub contact_particles: usize,
@@ -52,17 +54,17 @@ pub struct Separation {
     pub paper_damping_per_s: Option<f64>,
 }
 
-/// Measures the runs of a pair of liquids `(a, b)` with tensions `sigma_n_m` [N/m] at spacing
-/// `l0_m` [m]; runs without a G1G2 series are left out.
+/// Measures the runs of a pair of liquids `(a, b)` with tensions `sigma_n_m` [N/m], each at
+/// its own spacing; runs without a G1G2 series are left out.
 pub fn doublet_runs<'r>(
     pair: Pair,
     liquids: (&str, &str),
     sigma_n_m: (f64, f64),
-    l0_m: f64,
     runs: &'r [RunData],
 ) -> anyhow::Result<Vec<DoubletRun<'r>>> {
     let mut out = Vec::new();
     for (index, run) in runs.iter().enumerate() {
+        let l0_m = run.info.scene.discretisation.l0;
         let centroids = |l: &str| centroids_of(&run.timeseries, l);
         let t = run.timeseries.run_column(RunColumn::Time);
         let separation = separation(&t, centroids(liquids.0), centroids(liquids.1), l0_m);
@@ -88,7 +90,8 @@ pub fn doublet_runs<'r>(
             run,
             index,
             sigma12_n_m: s12,
-            start: start_of(&run.info.scene),
+            start: start_of(run),
+            l0_m,
             contact_particles,
             regime_seen: regime_seen(&cloud, &classes, g_final, l0_m),
             angles: (lens && pair == Pair::MatteSlag).then(|| {
@@ -100,11 +103,15 @@ pub fn doublet_runs<'r>(
     Ok(out)
 }
 
-/// How a run's scene starts: a shell body is an engulfed start, one body a merged one.
-fn start_of(scene: &solver::Scene) -> Start {
+/// How a run starts: a shell body is an engulfed start, one body a merged one; a `fine_` run
+/// is a touching start at the paper's spacing inside the standard suite.
+fn start_of(run: &RunData) -> Start {
+    let scene = &run.info.scene;
     let shell = |b: &solver::scene::Body| matches!(b.shape, solver::scene::BodyShape::Shell { .. });
     if scene.bodies.iter().any(shell) {
         Start::Engulfed
+    } else if run.id.starts_with("fine_") {
+        Start::Fine
     } else if scene.bodies.len() == 1 {
         Start::Merged
     } else {

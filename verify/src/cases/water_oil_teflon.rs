@@ -83,7 +83,7 @@ impl Case for WaterOilTeflon {
         let l0 = l0(f);
         let why = match f {
             Fidelity::Smoke => "a seconds-scale check that the run holds together",
-            Fidelity::Standard => "R/l0 = 8.4 per drop; the oil film at the rim is only ~3 particles thick, so its angle is coarse",
+            Fidelity::Standard => "R/l0 = 8.4 per drop; the oil film at the rim is only ~3 particles thick, so its angle is coarse; each liquid also alone on the Teflon (Eq. 23's ingredients)",
             Fidelity::Paper => "R/l0 = 17 per drop",
         };
         format!(
@@ -100,18 +100,14 @@ impl Case for WaterOilTeflon {
             center: [0.0, 0.0, z],
             radius: r,
         };
-        let scene = SceneBuilder::new(l0, sound_speed_for(&WATER, l0, 5.0))
-            .time(end(f), 2.0e-3)
-            .paper_effects()
-            .gravity(GRAVITY_M_S2)
-            .liquid(&WATER)
-            .liquid(&OIL)
-            .interface(WATER.name, OIL.name, SIGMA_WO)
-            .solid("teflon", &[(WATER.name, THETA_W), (OIL.name, THETA_O)])
-            .body("water", WATER.name, sphere(r))
-            // the oil drop sits on top of the water drop, one spacing above it
-            .body("oil", OIL.name, sphere(3.0 * r + l0))
-            .wall(
+        let setting = || {
+            SceneBuilder::new(l0, sound_speed_for(&WATER, l0, 5.0))
+                .time(end(f), 2.0e-3)
+                .paper_effects()
+                .gravity(GRAVITY_M_S2)
+        };
+        let plate = |b: SceneBuilder| {
+            b.wall(
                 "plate",
                 "teflon",
                 WallShape::Disk {
@@ -120,16 +116,92 @@ impl Case for WaterOilTeflon {
                 },
                 WallBoundary::FreeSlip,
             )
-            .build();
-        vec![RunSpec {
+            .build()
+        };
+        let scene = plate(
+            setting()
+                .liquid(&WATER)
+                .liquid(&OIL)
+                .interface(WATER.name, OIL.name, SIGMA_WO)
+                .solid("teflon", &[(WATER.name, THETA_W), (OIL.name, THETA_O)])
+                .body("water", WATER.name, sphere(r))
+                // the oil drop sits on top of the water drop, one spacing above it
+                .body("oil", OIL.name, sphere(3.0 * r + l0)),
+        );
+        let mut runs = vec![RunSpec {
             id: "water_oil".into(),
             scene,
             snapshot_times_s: vec![],
-        }]
+        }];
+        // Eq. 23's ingredients in the same setting: each liquid alone on the Teflon
+        if f != Fidelity::Smoke {
+            for (liquid, theta) in [(WATER, THETA_W), (OIL, THETA_O)] {
+                runs.push(RunSpec {
+                    id: format!("{}_alone", liquid.name),
+                    scene: plate(
+                        setting()
+                            .liquid(&liquid)
+                            .solid("teflon", &[(liquid.name, theta)])
+                            .body(liquid.name, liquid.name, sphere(r)),
+                    ),
+                    snapshot_times_s: vec![],
+                });
+            }
+        }
+        runs
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
         analysis::analyse(self, f, runs, dir)
     }
+}
+
+/// Eq. 23's ingredients measured alone: each liquid's angle on the Teflon against its typed
+/// Young angle (judged where the sessile fit has a bound), and θ12 of Eq. 23 at the measured
+/// angles beside the direct measurement (reported: the oil's 16° has no bound).
+fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
+    let mut out = Vec::new();
+    let mut measured = [f64::NAN; 2];
+    for (k, (name, typed)) in [("water", THETA_W), ("oil", THETA_O)]
+        .into_iter()
+        .enumerate()
+    {
+        let Some(alone) = &m.alone_deg[k] else {
+            continue;
+        };
+        measured[k] = *alone.as_ref().unwrap_or(&f64::NAN);
+        let tol = geometry::sessile_angle_error_deg(r_over_l0, typed).map(|e| {
+            Tolerance::absolute(
+                2.0 * e,
+                format!("twice the sessile fit's own error bound ({e}°, measure::geometry tests)"),
+            )
+        });
+        let metric = Metric::new(case, format!("{name} alone on Teflon"), "deg", measured[k]);
+        out.push(against_if(metric, typed, tol).note(match alone {
+            Ok(_) => {
+                format!("one 20 µL drop of {name} alone, same setting: an ingredient of Eq. 23")
+            }
+            Err(e) => format!("not measurable: {e}"),
+        }));
+    }
+    if measured.iter().all(|v| v.is_finite()) {
+        let at = eq23::solid_contact(
+            WATER.surface_tension_n_m,
+            OIL.surface_tension_n_m,
+            SIGMA_WO,
+            measured[0],
+            measured[1],
+        );
+        let (value, words) = match at {
+            Ok(SolidContact::TripleLine { theta12_deg }) => (theta12_deg, "a line".to_string()),
+            Ok(c) => (c.theta12_deg(), format!("no line ({c:?})")),
+            Err(e) => (f64::NAN, e),
+        };
+        out.push(
+            Metric::new(case, "θ12 of Eq. 23 at the angles measured alone", "deg", value)
+                .note(format!("Eq. 23 at θ_water = {:.1}°, θ_oil = {:.1}° (typed σ's): {words}; beside the θ12 measured directly", measured[0], measured[1])),
+        );
+    }
+    out
 }
 
 /// Eq. 23 for water and oil on Teflon.
@@ -155,14 +227,23 @@ pub struct Final<'r> {
     pub oil_angle_deg: Result<f64, String>,
     /// The water's share of the wetted plate [-].
     pub water_share: f64,
+    /// The contact angles [deg] of water and of oil alone on the Teflon, where those runs
+    /// exist (or why they could not be measured).
+    pub alone_deg: [Option<Result<f64, String>>; 2],
 }
 
 impl Analysis for WaterOilTeflon {
     type Measured<'r> = Option<Final<'r>>;
 
     fn measure<'r>(&self, f: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
-        let Some(run) = runs.first() else {
+        let Some(run) = runs.iter().find(|r| r.id == "water_oil") else {
             return Ok(None);
+        };
+        let alone = |id: &str| {
+            runs.iter().find(|r| r.id == id).map(|r| {
+                let cloud = r.last.cloud(l0(f));
+                geometry::sessile_contact_angle(&cloud, &surface::classify(&cloud), 0, 0.0)
+            })
         };
         let has_line = expected()?.has_triple_line();
         let cloud = run.last.cloud(l0(f));
@@ -177,6 +258,7 @@ impl Analysis for WaterOilTeflon {
                 .first()
                 .copied()
                 .unwrap_or(f64::NAN),
+            alone_deg: [alone("water_alone"), alone("oil_alone")],
         }))
     }
 
@@ -225,6 +307,7 @@ impl Analysis for WaterOilTeflon {
                     Err(e) => format!("{status}not measurable: {e}"),
                 }),
         );
+        metrics.extend(ingredients(self.name(), m, r_over_l0));
         metrics.push(
             Metric::new(self.name(), "water share of the wetted plate", "-", m.water_share)
                 .run(run)

@@ -25,7 +25,8 @@ use std::path::{Path, PathBuf};
 pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
-    /// The default of `verify all`: resolves the physics, the whole suite well under an hour.
+    /// The default of `verify all`: resolves the physics, the whole suite in about two hours on
+    /// 2 cores.
     Standard,
     /// The papers' particle counts and time steps.
     Paper,

@@ -85,6 +85,16 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
     )
 }
 
+/// What touches the plate, in a few words for a label on the map.
+fn short_words(seen: &str) -> &'static str {
+    match seen {
+        "liquid 2 rides on liquid 1" => "2 on 1",
+        "liquid 1 rides on liquid 2" => "1 on 2",
+        "no liquid on the plate" => "none",
+        _ => "line",
+    }
+}
+
 /// The measured θ12 [deg] of a run: NaN where none was measured.
 fn measured_theta12(m: &PlateRun) -> f64 {
     match &m.theta12_deg {
@@ -147,13 +157,13 @@ fn map(name: &str, (s1, s2): (f64, f64), runs: &[&PlateRun], dir: &Path) -> anyh
             (
                 m.theta31_deg,
                 m.theta23_deg,
-                format!("sim: {}{angle}", m.seen),
+                format!("{}{angle}", short_words(m.seen)),
             )
         })
         .collect();
     plot::draw_heatmap(
         &Heatmap {
-            title: format!("Eq. 23: θ12 for σ1 = {s1}, σ2 = {s2}, σ12 = {SIGMA12} N/m"),
+            title: format!("Eq. 23: θ12 for σ1 = {s1}, σ2 = {s2}, σ12 = {SIGMA12} N/m; runs: line or 2 on 1 (liquid 2 rides on 1)"),
             x_label: "θ31 [deg]".into(),
             y_label: "θ23 [deg]".into(),
             x: grid.clone(),

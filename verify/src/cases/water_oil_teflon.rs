@@ -4,10 +4,11 @@
 //! on it. Eq. 23 with σ_w = 72.8, σ_o = 20.1, σ_wo = 52 mN/m gives θ12 = 145.52° at the
 //! water/oil/Teflon line (inside the water); the oil spreads at 16.4° on the bare Teflon.
 //!
-//! **Departure from the paper:** the oil's viscosity, 9.35 Pa·s, is replaced by 0.05 Pa·s. Only
-//! the equilibrium is measured, and equilibrium shapes do not depend on viscosity; at 9.35 Pa·s
-//! the explicit viscous step (`0.125 ρ h²/μ` ≈ 6e-7 s at l0 = 0.2 mm) and the spreading time
-//! (μR/σ ≈ 0.8 s) would need ~10⁶ steps. The oil's density is not given in the paper: 970 kg/m³
+//! **Departure from the paper:** the oil's viscosity, 9.35 Pa·s, is replaced by 0.05 Pa·s: at
+//! 9.35 Pa·s the explicit viscous step (`0.125 ρ h²/μ` ≈ 6e-7 s at l0 = 0.2 mm) over the
+//! spreading time (μR/σ ≈ 0.8 s) needs ~10⁶ steps. This is not shown to be harmless: the
+//! spreading coefficient σ_w − σ_o − σ_wo is only +0.7 mN/m, so which state the oil reaches may
+//! depend on the path, and with it on the viscosity; the run at the real viscosity is not made. The oil's density is not given in the paper: 970 kg/m³
 //! (a typical silicone oil) is assumed.
 
 use super::analysis::{self, Analysis};

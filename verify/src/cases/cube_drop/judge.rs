@@ -5,6 +5,7 @@ use super::measure::CubeRun;
 use super::{paper_values, FIT_FROM_S, SIDE_M};
 use crate::analytic::lamb;
 use crate::cases::scene::MATTE;
+use crate::output::timeseries::RunColumn;
 use crate::suite::{Metric, Tolerance};
 
 /// Lamb's l = 4 mode of the sphere with the cube's volume.
@@ -47,7 +48,23 @@ pub fn run_metrics(case: &str, m: &CubeRun) -> Vec<Metric> {
         );
     }
     out.extend(paper_definitions(case, m, &lamb));
+    out.push(compression(case, m));
     out
+}
+
+/// The largest compression of any particle over the run, reported: one hypothesis for the
+/// paper's period rising with c² is the liquid's compressibility, which falls as 1/c².
+fn compression(case: &str, m: &CubeRun) -> Metric {
+    let c2 = m.c2_m2_s2;
+    let largest = m
+        .run
+        .timeseries
+        .run_column(RunColumn::MaxCompression)
+        .into_iter()
+        .fold(f64::NAN, f64::max);
+    Metric::new(case, format!("largest compression c²={c2:.0}"), "%", 100.0 * largest)
+        .run(m.run)
+        .note("largest ρ/ρ0 − 1 of any particle over the run: the compressibility a softer sound speed allows, beside the period it does (or does not) change")
 }
 
 /// The width's full period against Lamb's and the paper's Table A-1.

@@ -285,10 +285,18 @@ impl Judge<'_> {
                     "deg",
                     f64::NAN,
                 )
-                .against(d.theta12_deg, self.angle_tolerance("θ12", s12, m.l0_m))
+                .against(
+                    d.theta12_deg,
+                    self.angle_tolerance("θ12", s12, m.l0_m, false),
+                )
                 .run(m.run)
                 .note(format!("angles could not be measured: {e}"))])
             }
+        };
+        let line_note = if an.line_from_spheres {
+            "sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids; no particle is on both the free surface and the interface, so the triple line is started from the two free surfaces' intersection"
+        } else {
+            "sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids"
         };
         let mut out: Vec<Metric> = [
             ("θ1", an.theta1_deg, d.theta1_deg),
@@ -297,12 +305,18 @@ impl Judge<'_> {
         ]
         .into_iter()
         .map(|(name, val, reference)| {
-            Metric::new(self.case, format!("{name} σ12={}", self.tag(m)), "deg", val).against(reference, self.angle_tolerance(name, s12, m.l0_m)).run(m.run).note("sphere fits to the gas–1, gas–2 and 1–2 surfaces of the final state; axis through the centroids")
+            Metric::new(self.case, format!("{name} σ12={}", self.tag(m)), "deg", val)
+                .against(
+                    reference,
+                    self.angle_tolerance(name, s12, m.l0_m, an.line_from_spheres),
+                )
+                .run(m.run)
+                .note(line_note)
         })
         .collect();
         out.push(
             Metric::new(self.case, format!("Eq. 27 residual σ12={}", self.tag(m)), "%", 100.0 * an.eq27_residual)
-                .against(0.0, self.eq27_tolerance(s12, m.l0_m, (d.theta1_deg, d.theta2_deg, d.theta12_deg)))
+                .against(0.0, self.eq27_tolerance(s12, m.l0_m, an.line_from_spheres, (d.theta1_deg, d.theta2_deg, d.theta12_deg)))
                 .paper(paper_values::lookup("matte_slag_doublet", "sigma12_n_m", s12, "eq27_residual_percent"))
                 .run(m.run)
                 .note(format!("(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1 from the measured angles; vector residual |Σσt|/σ1 = {:.1} %", 100.0 * an.vector_residual)),
@@ -313,12 +327,14 @@ impl Judge<'_> {
     /// Twice the angle measurement's own worst error on voxelised analytic doublets
     /// (measure::geometry tests, 4 lattice shifts × 3 axes): at R0/l0 = 8, θ1/θ2 2.5°, θ12 4.8°
     /// (σ12 ≤ 0.4) and 13.7° (σ12 = 0.5: a nearly flat interface voxelises in steps); at
-    /// R0/l0 = 16, 1.05°, 1.1° and 5.2°.
-    fn angle_tolerance(&self, what: &str, s12: f64, l0_m: f64) -> Tolerance {
+    /// R0/l0 = 16, 1.05°, 1.1° and 5.2° — 6.6° where the triple line is started from the free
+    /// surfaces' intersection (`from_spheres`: no particle ring at the line; that test's worst).
+    fn angle_tolerance(&self, what: &str, s12: f64, l0_m: f64, from_spheres: bool) -> Tolerance {
         let fine = R0_M / l0_m >= 16.0;
         let method_error = match (what, fine) {
             ("θ12", false) if s12 > 0.45 => 13.7,
             ("θ12", false) => 4.8,
+            ("θ12", true) if s12 > 0.45 && from_spheres => 6.6,
             ("θ12", true) if s12 > 0.45 => 5.2,
             ("θ12", true) => 1.1,
             (_, false) => 2.5,
@@ -333,9 +349,15 @@ impl Judge<'_> {
     /// The Eq. 27 residual's tolerance [%]: the angle measurement's own errors (as in
     /// [`Self::angle_tolerance`]) carried through `(σ1 cos θ1 − σ2 cos θ2 − σ12 cos θ12)/σ1`
     /// at the analytic angles `(θ1, θ2, θ12)` [deg], in quadrature, twice.
-    fn eq27_tolerance(&self, s12: f64, l0_m: f64, (t1, t2, t12): (f64, f64, f64)) -> Tolerance {
+    fn eq27_tolerance(
+        &self,
+        s12: f64,
+        l0_m: f64,
+        from_spheres: bool,
+        (t1, t2, t12): (f64, f64, f64),
+    ) -> Tolerance {
         let (s1, s2) = self.sigma_n_m;
-        let e = |what: &str| self.angle_tolerance(what, s12, l0_m).abs / 2.0;
+        let e = |what: &str| self.angle_tolerance(what, s12, l0_m, from_spheres).abs / 2.0;
         let term = |s: f64, t: f64, what: &str| s * t.to_radians().sin() * e(what).to_radians();
         let sd = (term(s1, t1, "θ1").powi(2)
             + term(s2, t2, "θ2").powi(2)

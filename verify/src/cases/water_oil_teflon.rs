@@ -15,7 +15,7 @@
 
 use super::analysis::{self, Analysis};
 use super::paper_values;
-use super::plate_eq23::{against_if, triple_line_tolerance};
+use super::plate_eq23::triple_line_tolerance;
 use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, GRAVITY_M_S2};
 use super::views;
 use crate::analytic::eq23::{self, SolidContact};
@@ -201,12 +201,16 @@ fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
             )
         });
         let metric = Metric::new(case, format!("{name} alone on Teflon"), "deg", measured[k]);
-        out.push(against_if(metric, typed, tol).note(match alone {
-            Ok(_) => {
-                format!("one 20 µL drop of {name} alone, same setting: an ingredient of Eq. 23")
-            }
-            Err(e) => format!("not measurable: {e}"),
-        }));
+        out.push(
+            metric
+                .note(match alone {
+                    Ok(_) => format!(
+                        "one 20 µL drop of {name} alone, same setting: an ingredient of Eq. 23"
+                    ),
+                    Err(e) => format!("not measurable: {e}"),
+                })
+                .against_if(typed, tol),
+        );
     }
     if measured.iter().all(|v| v.is_finite()) {
         let at = eq23::solid_contact(
@@ -430,10 +434,11 @@ impl Analysis for WaterOilTeflon {
         {
             let metric = Metric::new(self.name(), "θ12 water/oil/Teflon", "deg", value(theta12));
             metrics.push(
-                against_if(metric, theta12_deg, triple_line_tolerance(r_over_l0))
+                metric
                     .paper(paper_values::number("water_oil_teflon", "theta12_deg"))
                     .run(run)
-                    .note(match theta12 { Ok(_) => format!("{status}water–oil interface fitted in a band above the plate; angle inside the water"), Err(e) => format!("{status}not measurable: {e}") }),
+                    .note(match theta12 { Ok(_) => format!("{status}water–oil interface fitted in a band above the plate; angle inside the water"), Err(e) => format!("{status}not measurable: {e}") })
+                    .against_if(theta12_deg, triple_line_tolerance(r_over_l0)),
             );
         }
         let paper_oil = paper_values::number("water_oil_teflon", "oil_contact_angle_deg");
@@ -452,15 +457,15 @@ impl Analysis for WaterOilTeflon {
             )
         });
         metrics.push(
-            against_if(oil, THETA_O, tol)
-                .paper(paper_oil)
+            oil.paper(paper_oil)
                 .run(run)
                 .note(match &m.oil_angle_deg {
                     Ok(_) => format!(
                         "{status}sphere fit to the oil's free surface in a band above the plate"
                     ),
                     Err(e) => format!("{status}not measurable: {e}"),
-                }),
+                })
+                .against_if(THETA_O, tol),
         );
         metrics.extend(ingredients(self.name(), m, r_over_l0));
         if let Some(v) = &m.viscous {

@@ -114,6 +114,25 @@ impl Metric {
         self
     }
 
+    /// With an analytic reference, judged where the measurement has an error bound
+    /// (`Some`); where it has none the reference stands beside the value, unjudged, and the
+    /// note says why. Call it after [`Metric::note`], which replaces the note.
+    pub fn against_if(mut self, reference: f64, tolerance: Option<Tolerance>) -> Self {
+        match tolerance {
+            Some(t) => self.against(reference, t),
+            None => {
+                self.reference = Some(reference);
+                let why = "no error bound of the measurement at this resolution: not judged";
+                self.note = if self.note.is_empty() {
+                    why.to_string()
+                } else {
+                    format!("{}; {why}", self.note)
+                };
+                self
+            }
+        }
+    }
+
     /// With the paper's own value.
     pub fn paper(mut self, value: Option<f64>) -> Self {
         self.paper = value;
@@ -149,6 +168,25 @@ impl Metric {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_reference_without_a_bound_is_shown_and_not_judged() {
+        let m = Metric::new("c", "m", "deg", 10.0)
+            .note("fit")
+            .against_if(12.0, None);
+        assert_eq!(
+            (m.reference, m.pass(), m.error()),
+            (Some(12.0), None, Some(-2.0))
+        );
+        assert!(m.note.starts_with("fit; ") && m.note.ends_with("not judged"));
+        let t = Tolerance::absolute(3.0, "t");
+        assert_eq!(
+            Metric::new("c", "m", "deg", 10.0)
+                .against_if(12.0, Some(t))
+                .pass(),
+            Some(true)
+        );
+    }
 
     #[test]
     fn unmeasured_values_survive_json() {

@@ -21,16 +21,6 @@ pub fn triple_line_tolerance(r_over_l0: f64) -> Option<Tolerance> {
     })
 }
 
-/// `metric` judged against `reference` where a tolerance exists, else only reported with it.
-pub fn against_if(metric: Metric, reference: f64, tolerance: Option<Tolerance>) -> Metric {
-    match tolerance {
-        Some(t) => metric.against(reference, t),
-        None => metric.note(format!(
-            "reference {reference:.1}; no error bound of the measurement at this resolution: not judged"
-        )),
-    }
-}
-
 /// What the metrics are judged with.
 pub struct Judge<'a> {
     /// The case's name.
@@ -67,12 +57,13 @@ impl Judge<'_> {
             "deg",
             *s.measured_deg.as_ref().unwrap_or(&f64::NAN),
         );
-        against_if(metric, s.typed_deg, tol)
-        .run(s.run)
-        .note(match &s.measured_deg {
-            Ok(_) => format!("{}sphere fit of the free surface within 6 l0 of the plate, at t = {:.0} ms: an ingredient of Eq. 23", s.run.status_note(), s.run.last.time_s * 1e3),
-            Err(e) => format!("{}not measurable: {e}", s.run.status_note()),
-        })
+        metric
+            .run(s.run)
+            .note(match &s.measured_deg {
+                Ok(_) => format!("{}sphere fit of the free surface within 6 l0 of the plate, at t = {:.0} ms: an ingredient of Eq. 23", s.run.status_note(), s.run.last.time_s * 1e3),
+                Err(e) => format!("{}not measurable: {e}", s.run.status_note()),
+            })
+            .against_if(s.typed_deg, tol)
     }
 
     /// The metrics of one binary drop.
@@ -84,12 +75,13 @@ impl Judge<'_> {
             let value = *measured.as_ref().unwrap_or(&f64::NAN);
             let metric = Metric::new(self.case, format!("θ12 {}", b.run.id), "deg", value);
             out.push(
-                against_if(metric, theta12_ref, triple_line_tolerance(self.r_over_l0))
+                metric
                     .run(b.run)
                     .note(match measured {
                         Ok(_) => "fit of the 1–2 interface in a band above the plate, angle inside liquid 1; reference: Eq. 23 from the typed Young angles".to_string(),
                         Err(e) => format!("not measurable: {e}"),
-                    }),
+                    })
+                    .against_if(theta12_ref, triple_line_tolerance(self.r_over_l0)),
             );
             out.extend(self.against_ingredients(b, m, value, theta12_ref));
         }

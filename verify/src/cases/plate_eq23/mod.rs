@@ -12,7 +12,7 @@ mod draw;
 mod judge;
 mod measure;
 
-pub(super) use judge::{against_if, triple_line_tolerance};
+pub(super) use judge::triple_line_tolerance;
 
 use super::analysis::{self, Analysis};
 use super::scene::{LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};

@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use verify::cases;
 use verify::diagnostics::{lattice_moduli, slab_tension};
+use verify::preflight;
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
 use verify::study::{run_all, StudyOptions};
@@ -61,6 +62,10 @@ struct SuiteArgs {
     /// the runs that exist.
     #[arg(long, value_delimiter = ',')]
     only: Vec<String>,
+    /// Refuse a run whose scene has pre-flight findings the case does not accept (unit
+    /// slips, coarse bodies, a low sound speed) instead of warning.
+    #[arg(long)]
+    strict: bool,
 }
 
 impl SuiteArgs {
@@ -77,6 +82,7 @@ impl SuiteArgs {
             progress: true,
             overrides: self.set.clone(),
             only: self.only.clone(),
+            strict: self.strict,
         }
     }
 }
@@ -107,6 +113,10 @@ struct RunArgs {
     /// Overwrite a non-empty output folder.
     #[arg(long)]
     force: bool,
+    /// Refuse a scene with pre-flight findings (unit slips, coarse bodies, a low sound speed)
+    /// instead of warning.
+    #[arg(long)]
+    strict: bool,
 }
 
 impl RunArgs {
@@ -125,6 +135,8 @@ impl RunArgs {
             checkpoint_steps: self.checkpoint_steps,
             checkpoint_minutes: Some(self.checkpoint_minutes),
             interrupt: Some(interrupt),
+            strict: self.strict,
+            accepted: Vec::new(),
         };
         let result = match (&self.resume, &self.scene) {
             (Some(_), _) => run::resume(&opts),
@@ -230,6 +242,16 @@ enum Command {
         #[arg(long, default_value_t = SlabDesign::default().crossings)]
         crossings: f64,
     },
+    /// Check a scene before running it: the pre-flight findings (unit slips, coarse bodies,
+    /// a low sound speed) and the time step and steps it will take. Exit 2 with --strict if
+    /// there are findings.
+    Check {
+        /// The scene (TOML).
+        scene: PathBuf,
+        /// Exit 2 if there is any finding.
+        #[arg(long)]
+        strict: bool,
+    },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
         /// Output folder of a previous suite run.
@@ -288,6 +310,7 @@ fn main() {
     let code = match cli.command {
         Command::Run(args) => args.run(),
         Command::List { fidelity } => list(fidelity),
+        Command::Check { scene, strict } => exit_of(check_scene(&scene, strict)),
         Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
         Command::All { suite, compare } => {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
@@ -420,6 +443,44 @@ fn report(out: &Path) -> anyhow::Result<i32> {
     summary::write_all(out, record.fidelity, &cases, None)?;
     eprintln!("summary: {}", out.join("summary.md").display());
     Ok(0)
+}
+
+/// `verify check`: the findings and the step estimate; exit 2 under `strict` with findings.
+fn check_scene(path: &Path, strict: bool) -> anyhow::Result<i32> {
+    let scene = match load_scene(path) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(e.exit_code());
+        }
+    };
+    let d = &scene.discretisation;
+    println!(
+        "{}: l0 = {:e} m, h = {:e} m, r_e = {:e} m, c = {} m/s, {} liquid(s), {} body(ies), {} wall(s)",
+        path.display(),
+        d.l0,
+        scene.h(),
+        scene.r_e(),
+        d.sound_speed,
+        scene.liquids.len(),
+        scene.bodies.len(),
+        scene.walls.len()
+    );
+    match preflight::step_estimate(&scene) {
+        Ok(e) => println!(
+            "time step: {:.3e} s ({}), {:.3e} steps to t = {:e} s",
+            e.dt_s, e.limited_by, e.steps, scene.time.end
+        ),
+        Err(e) => println!("time step: not estimated ({e})"),
+    }
+    let findings = preflight::check(&scene);
+    if findings.is_empty() {
+        println!("no findings");
+    }
+    for f in &findings {
+        println!("warning: {f}");
+    }
+    Ok(if strict && !findings.is_empty() { 2 } else { 0 })
 }
 
 /// `verify slab-tension`: the settings are the scene's own unless given.

@@ -1,4 +1,5 @@
-//! The `run` command: outputs, run record, refusal to overwrite, and exit codes.
+//! The `run` and `check` commands: outputs, run record, pre-flight findings, refusal to overwrite,
+//! and exit codes.
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -151,4 +152,72 @@ fn a_failing_run_exits_1_keeps_its_outputs_and_says_why() {
     let ts = verify::output::timeseries::Table::read(&out.join("timeseries.csv")).unwrap();
     assert!(ts.rows.len() > 3, "outputs before the failure are kept");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_names_the_unit_slip_and_strict_refuses_it() {
+    let dir = tmp("check");
+    // σ of the matte typed in mN/m (400) and a drop of 4 spacings
+    let scene = scene_file(
+        &dir,
+        &SMALL.replace("surface_tension = 0.4", "surface_tension = 400.0"),
+    );
+    let out = verify().arg("check").arg(&scene).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(
+        text.contains("did you mean 400 mN/m") && text.contains("surface_tension = 4e-1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("resolution of body drop") && text.contains("time step:"),
+        "{text}"
+    );
+    let strict = verify()
+        .arg("check")
+        .arg(&scene)
+        .arg("--strict")
+        .status()
+        .unwrap();
+    assert_eq!(strict.code(), Some(2));
+    // `run --strict` refuses it before making the output folder; without it the run warns and
+    // keeps the findings in its record
+    let refused = verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.join("strict"))
+        .arg("--strict")
+        .output()
+        .unwrap();
+    assert_eq!(
+        refused.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&refused.stderr)
+    );
+    assert!(!dir.join("strict").exists());
+}
+
+#[test]
+fn a_run_keeps_its_findings_in_its_record() {
+    let dir = tmp("warned");
+    let scene = scene_file(&dir, SMALL);
+    let out = dir.join("out");
+    assert!(verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .status()
+        .unwrap()
+        .success());
+    let info: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("run_info.json")).unwrap()).unwrap();
+    let warnings = info["warnings"]
+        .as_array()
+        .expect("the 4-spacing drop is recorded");
+    assert!(warnings
+        .iter()
+        .any(|w| w.as_str().unwrap().starts_with("resolution of body drop")));
 }

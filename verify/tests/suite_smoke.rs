@@ -29,6 +29,7 @@ fn run(name: &str) -> (Vec<Metric>, PathBuf) {
         progress: false,
         overrides: vec![],
         only: vec![],
+        strict: true,
     };
     let metrics = runner::run_case(case(name).as_ref(), &opts).expect("case runs");
     (metrics, out)
@@ -123,6 +124,7 @@ fn cube_drop_smoke() {
         progress: false,
         overrides: vec![],
         only: vec![],
+        strict: true,
     };
     runner::run_case(case("cube_drop").as_ref(), &opts).unwrap();
     let stamp2 = std::fs::metadata(out.join("cube_drop/c2_150/run_info.json"))

@@ -72,6 +72,10 @@ pub struct RunInfo {
     /// run's own peak when it ran in its own process, as `verify run` does).
     #[serde(default)]
     pub peak_memory_bytes: Option<u64>,
+    /// The scene's pre-flight findings (`verify::preflight`): warnings, then those the
+    /// caller accepted on purpose, each `"accepted (why): …"`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// How the run ended.
     pub status: Status,
     /// The error, if it failed.
@@ -115,6 +119,7 @@ impl RunInfo {
             neighbour_builds: 0,
             timings: Default::default(),
             peak_memory_bytes: None,
+            warnings: Vec::new(),
             status: Status::Running,
             error: None,
         }

@@ -15,6 +15,7 @@ pub use observer::{Observer, RunView};
 pub use start::{load_scene, prepare_out_dir};
 
 use crate::output::run_info::RunInfo;
+use crate::preflight::{self, Check};
 use solver::Scene;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
@@ -40,6 +41,10 @@ pub struct RunOptions {
     pub checkpoint_minutes: Option<f64>,
     /// Set (e.g. by Ctrl-C) to stop after the current step with a checkpoint.
     pub interrupt: Option<Arc<AtomicBool>>,
+    /// Refuse a scene with pre-flight findings instead of warning ([`crate::preflight`]).
+    pub strict: bool,
+    /// Pre-flight checks the caller makes on purpose, and why: recorded, not warned about.
+    pub accepted: Vec<(Check, String)>,
 }
 
 /// Runs `scene` (read from `scene_file`) with `opts`; returns the run record (also written to
@@ -55,11 +60,35 @@ pub fn run_scene_observed(
     opts: &RunOptions,
     observers: Vec<Box<dyn Observer + '_>>,
 ) -> Result<RunInfo, RunError> {
+    let warnings = preflight_warnings(scene, scene_file, opts)?;
     prepare_out_dir(&opts.out_dir, opts.force)?;
     start::in_pool(opts.threads, |threads| {
-        let run = Run::fresh(scene, scene_file, &opts.out_dir, threads)?;
+        let mut run = Run::fresh(scene, scene_file, &opts.out_dir, threads)?;
+        run.info.warnings = warnings;
         run.drive(opts, observers)
     })
+}
+
+/// The scene's pre-flight findings: printed on stderr and returned as the run record's
+/// warnings (with the accepted ones), or the scene refused with them under `opts.strict`.
+fn preflight_warnings(
+    scene: &Scene,
+    scene_file: &Path,
+    opts: &RunOptions,
+) -> Result<Vec<String>, RunError> {
+    let (warn, accepted) = preflight::sort_out(scene, &opts.accepted);
+    let lines: Vec<String> = warn.iter().map(|f| f.to_string()).collect();
+    if opts.strict && !lines.is_empty() {
+        return Err(RunError::Scene(format!(
+            "{} (--strict):\n  {}",
+            scene_file.display(),
+            lines.join("\n  ")
+        )));
+    }
+    for l in &lines {
+        eprintln!("warning: {}: {l}", scene_file.display());
+    }
+    Ok(lines.into_iter().chain(accepted).collect())
 }
 
 /// Continues the run in `opts.out_dir` from its checkpoint, as if it had never stopped.

@@ -15,7 +15,7 @@ pub(super) struct Run<'a> {
     sim: Simulation,
     /// Index of the last output time reached (0 = the initial state).
     output: u64,
-    info: RunInfo,
+    pub(super) info: RunInfo,
     out_dir: &'a Path,
     /// Continued from a checkpoint (its initial state was written before).
     resumed: bool,

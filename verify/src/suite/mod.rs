@@ -15,6 +15,7 @@ pub use metric::{Metric, Tolerance};
 
 use crate::output::run_info::RunInfo;
 use crate::output::timeseries::Table;
+pub use crate::preflight::Check;
 use serde::{Deserialize, Serialize};
 use solver::{Scene, Simulation};
 use std::path::{Path, PathBuf};
@@ -171,6 +172,12 @@ pub trait Case: Sync {
     fn effects(&self) -> Option<DeclaredEffects>;
     /// The resolution used at a fidelity, and why.
     fn resolution(&self, fidelity: Fidelity) -> String;
+    /// The pre-flight checks ([`crate::preflight`]) the case's runs at a fidelity trip on
+    /// purpose, and why; recorded in each run's record instead of warned about. By default:
+    /// at smoke fidelity, the resolution.
+    fn accepted_findings(&self, fidelity: Fidelity) -> Vec<(Check, String)> {
+        smoke_is_coarse(fidelity)
+    }
     /// The runs at a fidelity.
     fn runs(&self, fidelity: Fidelity) -> Vec<RunSpec>;
     /// Extra values recorded at every output (`probes.csv`).
@@ -184,4 +191,16 @@ pub trait Case: Sync {
         runs: &[RunData],
         dir: &Path,
     ) -> anyhow::Result<Vec<Metric>>;
+}
+
+/// At smoke fidelity every case is coarse on purpose: the resolution check is accepted.
+pub fn smoke_is_coarse(fidelity: Fidelity) -> Vec<(Check, String)> {
+    if fidelity == Fidelity::Smoke {
+        vec![(
+            Check::Resolution,
+            "smoke fidelity: a seconds-scale check that the case runs, coarse on purpose".into(),
+        )]
+    } else {
+        Vec::new()
+    }
 }

@@ -31,6 +31,8 @@ pub struct SuiteOptions {
     /// Simulate only the runs with these ids (`--only`); empty for all. The case is measured
     /// from the runs that exist.
     pub only: Vec<String>,
+    /// Refuse a run with pre-flight findings the case does not accept (`--strict`).
+    pub strict: bool,
 }
 
 /// What `verify report` needs to know about the last suite run in a folder.
@@ -81,6 +83,8 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
             threads: opts.threads,
             force: true,
             progress: opts.progress,
+            strict: opts.strict,
+            accepted: case.accepted_findings(opts.fidelity),
             ..Default::default()
         };
         match run_scene_observed(&spec.scene, &label, &ropts, observers) {

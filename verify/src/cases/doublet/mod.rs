@@ -19,7 +19,9 @@ mod measure;
 use super::analysis::{self, Analysis};
 use super::paper_values;
 use super::scene::{LiquidProps, SceneBuilder, MATTE, SLAG};
-use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use crate::suite::{
+    smoke_is_coarse, Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec,
+};
 use solver::scene::{BodyShape, Cut};
 use std::path::Path;
 
@@ -235,6 +237,26 @@ impl Case for Doublet {
     }
     fn effects(&self) -> Option<DeclaredEffects> {
         Some(DeclaredEffects::FREE_DROP)
+    }
+    fn accepted_findings(&self, f: Fidelity) -> Vec<(Check, String)> {
+        let mut out = smoke_is_coarse(f);
+        if f != Fidelity::Smoke {
+            out.push((Check::CohesiveSoundSpeed, "at the paper's spacing (paper fidelity, and the standard suite's fine σ12 = 0.5 run) the paper's c² = 150 m²/s² (§2.3) is kept: up to 1.7 % compression".into()));
+        }
+        match self.0 {
+            Pair::Equal => out.push((
+                Check::InterfacialTension,
+                "the separation sweep crosses σ1 + σ2 on purpose (Eq. 25)".into(),
+            )),
+            Pair::MatteSlag => {
+                let why = "the engulfed start: a slag shell of one drop's volume around the matte is thin by construction, and settles";
+                out.push((Check::Film, why.into()));
+                if f == Fidelity::Paper {
+                    out.push((Check::Resolution, why.into()));
+                }
+            }
+        }
+        out
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = Self::l0(f);

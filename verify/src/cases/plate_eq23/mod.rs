@@ -17,7 +17,9 @@ pub(super) use judge::triple_line_tolerance;
 use super::analysis::{self, Analysis};
 use super::scene::{LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};
 use crate::analytic::eq23::{self, SolidContact};
-use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use crate::suite::{
+    smoke_is_coarse, Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec,
+};
 use solver::scene::{BodyShape, Cut, WallBoundary, WallShape};
 use std::path::Path;
 
@@ -254,6 +256,17 @@ impl Case for PlateEq23 {
     }
     fn effects(&self) -> Option<DeclaredEffects> {
         Some(DeclaredEffects::ON_A_PLATE)
+    }
+    fn accepted_findings(&self, f: Fidelity) -> Vec<(Check, String)> {
+        let mut out = smoke_is_coarse(f);
+        if f == Fidelity::Paper {
+            out.push((
+                Check::CohesiveSoundSpeed,
+                "paper fidelity keeps the paper's c² = 150 m²/s² (§2.3) at its finer spacing"
+                    .into(),
+            ));
+        }
+        out
     }
     fn resolution(&self, f: Fidelity) -> String {
         let l0 = l0(f);

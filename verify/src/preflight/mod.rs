@@ -108,3 +108,31 @@ pub fn sort_out(scene: &Scene, accepted: &[(Check, String)]) -> (Vec<Finding>, V
     }
     (warn, kept)
 }
+
+/// A one-body water scene for the checks' tests: spacing `l0` [m], sound speed `c` [m/s],
+/// lines `effects` under `[effects]`, and the body's `shape` (an inline TOML table).
+#[cfg(test)]
+fn water_scene(l0: f64, c: f64, effects: &str, shape: &str) -> Scene {
+    Scene::from_toml_str(&format!(
+        r#"
+        [discretisation]
+        l0 = {l0}
+        sound_speed = {c}
+        [time]
+        end = 1e-3
+        output_interval = 1e-4
+        [effects]
+        {effects}
+        [[liquid]]
+        name = "water"
+        density = 1000.0
+        viscosity = 1e-3
+        surface_tension = 0.072
+        [[body]]
+        name = "drop"
+        liquid = "water"
+        shape = {shape}
+        "#
+    ))
+    .unwrap()
+}

@@ -84,26 +84,7 @@ mod tests {
     use super::*;
 
     fn scene(l0: f64, shape: &str) -> Scene {
-        Scene::from_toml_str(&format!(
-            r#"
-            [discretisation]
-            l0 = {l0}
-            sound_speed = 10.0
-            [time]
-            end = 1e-3
-            output_interval = 1e-4
-            [[liquid]]
-            name = "water"
-            density = 1000.0
-            viscosity = 1e-3
-            surface_tension = 0.072
-            [[body]]
-            name = "drop"
-            liquid = "water"
-            shape = {shape}
-            "#
-        ))
-        .unwrap()
+        super::super::water_scene(l0, 10.0, "", shape)
     }
 
     #[test]

@@ -204,29 +204,13 @@ mod tests {
     use super::*;
 
     fn drop_scene(c: f64, extra: &str) -> Scene {
-        Scene::from_toml_str(&format!(
-            r#"
-            [discretisation]
-            l0 = 1e-4
-            sound_speed = {c}
-            [time]
-            end = 1e-3
-            output_interval = 1e-4
-            [effects]
-            interfacial_tension = true
-            {extra}
-            [[liquid]]
-            name = "water"
-            density = 1000.0
-            viscosity = 1e-3
-            surface_tension = 0.072
-            [[body]]
-            name = "drop"
-            liquid = "water"
-            shape = {{ kind = "sphere", center = [0.0, 0.0, 0.0], radius = 1e-3 }}
-            "#
-        ))
-        .unwrap()
+        let sphere = r#"{ kind = "sphere", center = [0.0, 0.0, 0.0], radius = 1e-3 }"#;
+        super::super::water_scene(
+            1e-4,
+            c,
+            &format!("interfacial_tension = true\n{extra}"),
+            sphere,
+        )
     }
 
     #[test]

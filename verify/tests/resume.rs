@@ -1,5 +1,6 @@
-//! No run loses its data: a run stopped by Ctrl-C (SIGINT) or killed outright (SIGKILL) is
-//! continued with `run --resume DIR` and ends with exactly the outputs of a run never stopped.
+//! No run loses its data: a run stopped by Ctrl-C (SIGINT), by a scheduler (SIGTERM) or killed
+//! outright (SIGKILL) is continued with `run --resume DIR` and ends with exactly the outputs of a
+//! run never stopped.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -102,15 +103,16 @@ fn interrupted_or_killed_runs_resume_to_the_same_bits() {
     run_to_end(&scene, &whole);
     let expected = std::fs::read(whole.join("timeseries.csv")).unwrap();
 
-    for signal in ["INT", "KILL"] {
+    for signal in ["INT", "TERM", "KILL"] {
         let out = base.join(format!("stopped-{signal}"));
         let code = run_and_stop(&scene, &out, signal);
         let partial = std::fs::read(out.join("timeseries.csv")).unwrap();
         if code.is_none() && partial == expected {
             continue; // the run finished before the signal arrived: nothing to resume
         }
-        if signal == "INT" {
-            assert_eq!(code, Some(130), "Ctrl-C exits with 130");
+        if signal != "KILL" {
+            // Ctrl-C, and a scheduler's SIGTERM at its time limit
+            assert_eq!(code, Some(130), "SIG{signal} exits with 130");
             let info = std::fs::read_to_string(out.join("run_info.json")).unwrap();
             assert!(info.contains("\"status\": \"interrupted\""), "{info}");
         }

@@ -51,6 +51,15 @@ fn unique_name(field: &str, name: &str, seen: &mut BTreeSet<String>) -> R {
             "names must not be empty",
         ));
     }
+    // names become column headers of the time series (`water_centroid_x_m`) and keys in the
+    // records: a comma, quote or line break would split or shift a CSV column
+    if let Some(c) = name.chars().find(|c| matches!(c, ',' | '"' | '\n' | '\r')) {
+        return Err(SceneError::invalid(
+            field,
+            name,
+            format!("names must not contain {c:?} (they head CSV columns); use e.g. `slag_FeO`"),
+        ));
+    }
     if !seen.insert(name.to_string()) {
         return Err(SceneError::invalid(field, name, "this name is used twice"));
     }

@@ -278,3 +278,10 @@ fn particle_shifting_coefficient_out_of_range() {
         );
     }
 }
+
+#[test]
+fn a_name_that_would_break_a_csv_column() {
+    // liquid names head the time series' columns: `slag, FeO` would split one in two
+    let text = base().replace("name = \"matte\"", "name = \"slag, FeO\"");
+    assert_names(&text, &["slag, FeO", "CSV"]);
+}

@@ -11,10 +11,21 @@ pub use error::RunError;
 
 use std::path::Path;
 
-/// Writes `bytes` to `path` atomically: a temporary file in the same folder, then a rename, so
-/// a reader never sees a half-written file.
+/// Writes `bytes` to `path` atomically: a temporary file in the same folder, synced to disk,
+/// then a rename (synced too), so a reader never sees a half-written file, even after a crash.
 pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write;
     let tmp = path.with_extension("tmp-write");
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path)
+    let mut f = std::fs::File::create(&tmp)?;
+    f.write_all(bytes)?;
+    // on disk before the rename: a crash (or a node lost by a batch job) leaves the old file
+    // or the new one, never a renamed empty one
+    f.sync_all()?;
+    drop(f);
+    std::fs::rename(&tmp, path)?;
+    // and the rename itself on disk (the folder's entry)
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::File::open(dir)?.sync_all()?;
+    }
+    Ok(())
 }

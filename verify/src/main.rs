@@ -66,6 +66,10 @@ struct SuiteArgs {
     /// slips, coarse bodies, a low sound speed) instead of warning.
     #[arg(long)]
     strict: bool,
+    /// Write each run's checkpoint every M minutes of wall time; a suite stopped by Ctrl-C or
+    /// SIGTERM (exit 130) resumes its stopped run when the same command runs again.
+    #[arg(long, value_name = "M", default_value = "10")]
+    checkpoint_minutes: f64,
 }
 
 impl SuiteArgs {
@@ -83,6 +87,8 @@ impl SuiteArgs {
             overrides: self.set.clone(),
             only: self.only.clone(),
             strict: self.strict,
+            checkpoint_minutes: Some(self.checkpoint_minutes),
+            interrupt: Some(interrupt_flag()),
         }
     }
 }
@@ -123,9 +129,7 @@ impl RunArgs {
     /// Runs (or resumes) the scene; the exit code. Ctrl-C finishes the current step, writes a
     /// checkpoint, flushes and exits with 130.
     fn run(self) -> i32 {
-        let interrupt = Arc::new(AtomicBool::new(false));
-        let flag = interrupt.clone();
-        let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
+        let interrupt = interrupt_flag();
         let opts = RunOptions {
             out_dir: self.resume.clone().or(self.out).unwrap_or_default(),
             vtk_every: self.vtk,
@@ -524,9 +528,25 @@ fn slab_tension_table(
     Ok(0)
 }
 
+/// A flag set by Ctrl-C, SIGTERM or SIGHUP (the handler is installed once per process).
+fn interrupt_flag() -> Arc<AtomicBool> {
+    static FLAG: std::sync::OnceLock<Arc<AtomicBool>> = std::sync::OnceLock::new();
+    FLAG.get_or_init(|| {
+        let flag = Arc::new(AtomicBool::new(false));
+        let f = flag.clone();
+        let _ = ctrlc::set_handler(move || f.store(true, Ordering::SeqCst));
+        flag
+    })
+    .clone()
+}
+
 fn exit_of(r: anyhow::Result<i32>) -> i32 {
     match r {
         Ok(code) => code,
+        Err(e) if e.downcast_ref::<runner::Interrupted>().is_some() => {
+            eprintln!("{e}");
+            130
+        }
         Err(e) => {
             eprintln!("error: {e:#}");
             3

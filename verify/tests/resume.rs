@@ -148,3 +148,81 @@ fn interrupted_or_killed_runs_resume_to_the_same_bits() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("no run to resume"));
     let _ = std::fs::remove_dir_all(&base);
 }
+
+/// The files of every run of a case's folder: `(run/file, bytes)`, sorted; the records and
+/// summaries (which hold wall times) left out.
+fn run_files(case_dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    for run in std::fs::read_dir(case_dir).unwrap() {
+        let run = run.unwrap().path();
+        if !run.is_dir() {
+            continue;
+        }
+        for f in std::fs::read_dir(&run).unwrap() {
+            let f = f.unwrap().path();
+            let name = f.file_name().unwrap().to_string_lossy().to_string();
+            if name.ends_with(".csv") {
+                let key = format!("{}/{name}", run.file_name().unwrap().to_string_lossy());
+                out.push((key, std::fs::read(&f).unwrap()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn a_suite_stopped_by_sigterm_resumes_its_run_to_the_same_bits() {
+    let base = dir("suite");
+    let case = |out: &Path| {
+        let mut c = verify();
+        c.args(["case", "cube_drop", "--fidelity", "smoke", "--threads", "2"])
+            .arg("--out")
+            .arg(out)
+            .args(["--checkpoint-minutes", "0.0002"])
+            .stderr(Stdio::null());
+        c
+    };
+    let whole = base.join("whole");
+    assert!(case(&whole).status().unwrap().success());
+    let stopped = base.join("stopped");
+    let mut child = case(&stopped).spawn().unwrap();
+    let t0 = Instant::now();
+    let has_checkpoint = || {
+        std::fs::read_dir(stopped.join("cube_drop")).is_ok_and(|d| {
+            d.filter_map(|e| e.ok())
+                .any(|e| e.path().join("checkpoint.bin").exists())
+        })
+    };
+    while !has_checkpoint() {
+        assert!(
+            t0.elapsed() < Duration::from_secs(120),
+            "no checkpoint written"
+        );
+        if let Some(st) = child.try_wait().unwrap() {
+            panic!("the suite ended before a checkpoint: {st:?}");
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    let code = child.wait().unwrap().code();
+    assert_eq!(code, Some(130), "a stopped suite exits with 130");
+    assert_ne!(
+        run_files(&whole.join("cube_drop")),
+        run_files(&stopped.join("cube_drop"))
+    );
+    // the same command again resumes the stopped run and runs the rest
+    assert!(case(&stopped).status().unwrap().success());
+    let (a, b) = (
+        run_files(&whole.join("cube_drop")),
+        run_files(&stopped.join("cube_drop")),
+    );
+    assert_eq!(a.len(), b.len());
+    for ((na, fa), (nb, fb)) in a.iter().zip(&b) {
+        assert_eq!(na, nb);
+        assert!(fa == fb, "{na} differs after the resumed suite");
+    }
+}

@@ -30,6 +30,8 @@ fn run(name: &str) -> (Vec<Metric>, PathBuf) {
         overrides: vec![],
         only: vec![],
         strict: true,
+        checkpoint_minutes: None,
+        interrupt: None,
     };
     let metrics = runner::run_case(case(name).as_ref(), &opts).expect("case runs");
     (metrics, out)
@@ -125,6 +127,8 @@ fn cube_drop_smoke() {
         overrides: vec![],
         only: vec![],
         strict: true,
+        checkpoint_minutes: None,
+        interrupt: None,
     };
     runner::run_case(case("cube_drop").as_ref(), &opts).unwrap();
     let stamp2 = std::fs::metadata(out.join("cube_drop/c2_150/run_info.json"))

@@ -69,6 +69,11 @@ pub fn restore(out: &Path) -> Result<(Simulation, u64), RunError> {
     Ok((sim, file.outputs_written))
 }
 
+/// Whether `out` holds a checkpoint file.
+pub fn exists(out: &Path) -> bool {
+    out.join(NAME).is_file()
+}
+
 /// Removes the checkpoint of a completed run.
 pub fn remove(out: &Path) {
     let _ = std::fs::remove_file(out.join(NAME));

@@ -29,3 +29,16 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     }
     Ok(())
 }
+
+/// Keeps the header and the first `rows` data rows of a CSV file (dropping a half-written last
+/// line too): a resumed run writes the rows after its checkpoint again.
+pub fn keep_csv_rows(path: &Path, rows: u64) -> std::io::Result<()> {
+    use std::io::BufRead;
+    let lines: Vec<String> = std::io::BufReader::new(std::fs::File::open(path)?)
+        .lines()
+        .take(rows as usize + 1)
+        .collect::<Result<_, _>>()?;
+    let mut text = lines.join("\n");
+    text.push('\n');
+    atomic_write(path, text.as_bytes())
+}

@@ -93,7 +93,15 @@ fn preflight_warnings(
 
 /// Continues the run in `opts.out_dir` from its checkpoint, as if it had never stopped.
 pub fn resume(opts: &RunOptions) -> Result<RunInfo, RunError> {
+    resume_observed(opts, Vec::new())
+}
+
+/// [`resume`] with more observers (told [`Observer::on_resume`] first).
+pub fn resume_observed(
+    opts: &RunOptions,
+    observers: Vec<Box<dyn Observer + '_>>,
+) -> Result<RunInfo, RunError> {
     start::in_pool(opts.threads, |threads| {
-        Run::resumed(&opts.out_dir, threads)?.drive(opts, Vec::new())
+        Run::resumed(&opts.out_dir, threads)?.drive(opts, observers)
     })
 }

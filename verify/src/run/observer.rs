@@ -27,6 +27,11 @@ pub trait Observer: Send {
     fn on_output(&mut self, _run: &RunView) -> Result<(), RunError> {
         Ok(())
     }
+    /// The run continues from its checkpoint, taken at output `run.output` (no output is
+    /// told again): files written up to there are kept, later rows dropped.
+    fn on_resume(&mut self, _run: &RunView) -> Result<(), RunError> {
+        Ok(())
+    }
     /// A step was taken between two output times.
     fn on_step(&mut self, _run: &RunView) -> Result<(), RunError> {
         Ok(())
@@ -45,6 +50,10 @@ impl Observers<'_> {
     /// Tells every observer of an output time.
     pub(super) fn on_output(&mut self, run: &RunView) -> Result<(), RunError> {
         self.0.iter_mut().try_for_each(|o| o.on_output(run))
+    }
+    /// Tells every observer that the run continues from its checkpoint.
+    pub(super) fn on_resume(&mut self, run: &RunView) -> Result<(), RunError> {
+        self.0.iter_mut().try_for_each(|o| o.on_resume(run))
     }
     /// Tells every observer of a step.
     pub(super) fn on_step(&mut self, run: &RunView) -> Result<(), RunError> {

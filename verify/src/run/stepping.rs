@@ -71,7 +71,9 @@ impl<'a> Run<'a> {
     ) -> Result<RunInfo, RunError> {
         let mut observers = outputs::from_options(opts, &self.view(), self.resumed, extra)?;
         self.info.write(self.out_dir)?;
-        if !self.resumed {
+        if self.resumed {
+            observers.on_resume(&self.view())?;
+        } else {
             observers.on_output(&self.view())?;
         }
         let ending = self.advance(&mut observers, opts.interrupt.as_deref())?;

@@ -8,10 +8,12 @@ mod snapshots;
 use super::compare::summary_csv;
 use super::{Case, Fidelity, Metric};
 use crate::output::run_info::RunInfo;
-use crate::run::{run_scene_observed, Observer, RunError, RunOptions};
+use crate::run::{resume_observed, run_scene_observed, Observer, RunError, RunOptions};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 /// Options of a suite run.
 #[derive(Clone, Debug)]
@@ -33,7 +35,29 @@ pub struct SuiteOptions {
     pub only: Vec<String>,
     /// Refuse a run with pre-flight findings the case does not accept (`--strict`).
     pub strict: bool,
+    /// Write each run's checkpoint every this many minutes of wall time (a stopped suite
+    /// resumes its stopped run where it was).
+    pub checkpoint_minutes: Option<f64>,
+    /// Set (by Ctrl-C or SIGTERM) to stop the running run with a checkpoint, and the suite.
+    pub interrupt: Option<Arc<AtomicBool>>,
 }
+
+/// The suite stopped because its run `0` was interrupted (Ctrl-C, SIGTERM); run the same
+/// command again to resume it.
+#[derive(Debug)]
+pub struct Interrupted(pub String);
+
+impl std::fmt::Display for Interrupted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} interrupted (checkpoint written); the same command resumes it",
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for Interrupted {}
 
 /// What `verify report` needs to know about the last suite run in a folder.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -69,8 +93,10 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
         if !opts.force && saved::reusable(&rdir, spec) {
             continue;
         }
+        let resume = !opts.force && saved::resumable(&rdir, spec);
         if opts.progress {
-            eprintln!("{} / {}", case.name(), spec.id);
+            let how = if resume { " (resumed)" } else { "" };
+            eprintln!("{} / {}{how}", case.name(), spec.id);
         }
         let observers: Vec<Box<dyn Observer + '_>> = vec![
             Box::new(probes::Probes::of(case)),
@@ -85,10 +111,24 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
             progress: opts.progress,
             strict: opts.strict,
             accepted: case.accepted_findings(opts.fidelity),
+            checkpoint_minutes: opts.checkpoint_minutes,
+            interrupt: opts.interrupt.clone(),
             ..Default::default()
         };
-        match run_scene_observed(&spec.scene, &label, &ropts, observers) {
+        let result = if resume {
+            resume_observed(&ropts, observers)
+        } else {
+            run_scene_observed(&spec.scene, &label, &ropts, observers)
+        };
+        match result {
             Ok(_) => {}
+            Err(RunError::Interrupted(_)) => {
+                return Err(anyhow::Error::new(Interrupted(format!(
+                    "{}/{}",
+                    case.name(),
+                    spec.id
+                ))))
+            }
             // a run that fails is a result: its record says so and the case reports it
             Err(RunError::Simulation(e)) => eprintln!("{}/{}: {e}", case.name(), spec.id),
             Err(e) => return Err(anyhow::anyhow!("{}/{}: {e}", case.name(), spec.id)),

@@ -12,7 +12,7 @@ use super::RunOptions;
 use crate::output::RunError;
 
 /// The observers of a run with `opts` that starts (or, `resumed`, continues) at `run`: the
-/// standard outputs, then `extra`, then the progress bar.
+/// standard outputs, then `extra`, then the checkpoints, then the progress bar.
 pub(super) fn from_options<'o>(
     opts: &RunOptions,
     run: &RunView,
@@ -24,8 +24,9 @@ pub(super) fn from_options<'o>(
     if let Some(every) = opts.vtk_every {
         list.push(Box::new(vtu::Vtu::every(every)));
     }
-    list.push(Box::new(checkpoint::Checkpoints::new(opts, run)));
     list.extend(extra);
+    // after every file of an output: a checkpoint taken at output k finds all of k written
+    list.push(Box::new(checkpoint::Checkpoints::new(opts, run)));
     if opts.progress {
         list.push(Box::new(progress::Progress::new(run)));
     }

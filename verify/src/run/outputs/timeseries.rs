@@ -1,10 +1,9 @@
 //! `timeseries.csv`: a row of observables at every output time.
 
 use crate::output::timeseries::{phase_q4, TimeseriesWriter};
-use crate::output::RunError;
+use crate::output::{keep_csv_rows, RunError};
 use crate::run::observer::{Observer, RunView};
-use std::io::{BufRead, BufReader, Write};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Writes `timeseries.csv`.
 pub(super) struct Timeseries {
@@ -20,7 +19,7 @@ impl Timeseries {
         let model = &run.sim.model;
         let phases = &model.phase_names[..model.n_liquids];
         let writer = if resumed {
-            keep_rows(&path, run.output + 1)
+            keep_csv_rows(&path, run.output + 1)
                 .map_err(|e| RunError::io("cannot rewrite", &path, e))?;
             TimeseriesWriter::create(&path, phases, true)
                 .map_err(|e| RunError::io("cannot append to", &path, e))?
@@ -38,20 +37,4 @@ impl Observer for Timeseries {
             .write(&run.sim.observe(), &phase_q4(run.sim))
             .map_err(|e| RunError::io("cannot write", &self.path, e))
     }
-}
-
-/// Keeps the header and the first `rows` data rows of a CSV file (dropping a half-written
-/// last line too).
-fn keep_rows(path: &Path, rows: u64) -> std::io::Result<()> {
-    let lines: Vec<String> = BufReader::new(std::fs::File::open(path)?)
-        .lines()
-        .take(rows as usize + 1)
-        .collect::<Result<_, _>>()?;
-    let mut text = lines.join("\n");
-    text.push('\n');
-    let tmp = path.with_extension("tmp-write");
-    let mut f = std::fs::File::create(&tmp)?;
-    f.write_all(text.as_bytes())?;
-    f.sync_all()?;
-    std::fs::rename(&tmp, path)
 }

@@ -23,6 +23,21 @@ impl<'c> Probes<'c> {
 }
 
 impl Observer for Probes<'_> {
+    fn on_resume(&mut self, run: &RunView) -> Result<(), RunError> {
+        let path = run.out_dir.join("probes.csv");
+        if !path.exists() {
+            return Ok(());
+        }
+        crate::output::keep_csv_rows(&path, run.output + 1)
+            .map_err(|e| RunError::io("cannot rewrite", &path, e))?;
+        let f = std::fs::OpenOptions::new()
+            .append(true)
+            .open(&path)
+            .map_err(|e| RunError::io("cannot append to", &path, e))?;
+        self.file = Some((BufWriter::new(f), path));
+        Ok(())
+    }
+
     fn on_output(&mut self, run: &RunView) -> Result<(), RunError> {
         let values = self.case.probe(run.sim);
         if run.output == 0 && !values.is_empty() {

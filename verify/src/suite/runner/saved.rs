@@ -17,6 +17,14 @@ pub(super) fn reusable(dir: &Path, spec: &RunSpec) -> bool {
     })
 }
 
+/// Whether `dir` holds a stopped run of exactly `spec`'s scene with a checkpoint to resume.
+pub(super) fn resumable(dir: &Path, spec: &RunSpec) -> bool {
+    crate::output::checkpoint::exists(dir)
+        && RunInfo::read(dir).is_ok_and(|info| {
+            matches!(info.status, Status::Interrupted | Status::Running) && info.scene == spec.scene
+        })
+}
+
 /// The wall particles of a scene as a dump (empty if it has none).
 fn wall_dump(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
     if scene.walls.is_empty() {

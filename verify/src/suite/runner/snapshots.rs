@@ -1,6 +1,7 @@
 //! Particle dumps of a case's runs: at the case's snapshot times and at the end
 //! (`particles_final.csv`), for measurements redone without simulating.
 
+use crate::output::run_info::Status;
 use crate::output::RunError;
 use crate::run::{Observer, RunView};
 use crate::suite::dump::Dump;
@@ -37,6 +38,16 @@ fn dump(run: &RunView, name: &str) -> Result<(), RunError> {
 }
 
 impl Observer for Snapshots {
+    fn on_resume(&mut self, run: &RunView) -> Result<(), RunError> {
+        // the times up to the checkpoint were dumped before it
+        while self.next < self.times_s.len()
+            && run.sim.time_s >= self.times_s[self.next] * (1.0 - 1e-9)
+        {
+            self.next += 1;
+        }
+        Ok(())
+    }
+
     fn on_output(&mut self, run: &RunView) -> Result<(), RunError> {
         while self.next < self.times_s.len()
             && run.sim.time_s >= self.times_s[self.next] * (1.0 - 1e-9)
@@ -48,6 +59,10 @@ impl Observer for Snapshots {
     }
 
     fn on_end(&mut self, run: &RunView) -> Result<(), RunError> {
+        // an interrupted run has no final state yet: it resumes from its checkpoint
+        if run.info.status == Status::Interrupted {
+            return Ok(());
+        }
         dump(run, FINAL)
     }
 }

@@ -75,8 +75,7 @@ fn run_writes_timeseries_run_info_and_snapshots() {
     for k in 0..3 {
         assert!(out.join(format!("particles_{k:06}.vtu")).exists());
     }
-    let vtu = std::fs::read_to_string(out.join("particles_000000.vtu")).unwrap();
-    assert!(vtu.contains("Name=\"pressure_Pa\"") && vtu.contains("Name=\"phase\""));
+    check_snapshots(&out, info["fluid_particles"].as_u64().unwrap() as usize);
 
     // an existing output folder is not overwritten without --force (exit code 3)
     let st = verify()
@@ -220,4 +219,58 @@ fn a_run_keeps_its_findings_in_its_record() {
     assert!(warnings
         .iter()
         .any(|w| w.as_str().unwrap().starts_with("resolution of body drop")));
+}
+
+/// The `.vtu` snapshots of `out`, read back by an independent reader (vtkio): `n` points each,
+/// the point data with their components, a matte's density; and the `.pvd` collection naming
+/// them at their times.
+fn check_snapshots(out: &std::path::Path, n: usize) {
+    use vtkio::model::{Attribute, DataSet};
+    for k in 0..3 {
+        let vtk = vtkio::Vtk::import(out.join(format!("particles_{k:06}.vtu"))).unwrap();
+        let DataSet::UnstructuredGrid { pieces, .. } = vtk.data else {
+            panic!("not an unstructured grid");
+        };
+        let piece = pieces
+            .into_iter()
+            .next()
+            .unwrap()
+            .into_loaded_piece_data(None)
+            .unwrap();
+        assert_eq!(piece.num_points(), n);
+        let mut names = Vec::new();
+        for a in piece.data.point {
+            let Attribute::DataArray(a) = a else { continue };
+            let comps = a.elem.num_comp() as usize;
+            let values: Vec<f64> = a.data.cast_into().unwrap();
+            assert_eq!(values.len(), n * comps, "{}", a.name);
+            if a.name == "density_kg_m3" {
+                assert!(
+                    values.iter().all(|r| (r / 4500.0 - 1.0).abs() < 0.5),
+                    "{values:?}"
+                );
+            }
+            names.push((a.name, comps));
+        }
+        assert_eq!(
+            names,
+            [
+                ("velocity_m_s".to_string(), 3),
+                ("density_kg_m3".to_string(), 1),
+                ("pressure_Pa".to_string(), 1),
+                ("phase".to_string(), 1)
+            ]
+        );
+        let points: Vec<f64> = piece.points.cast_into().unwrap();
+        assert!(points.len() == 3 * n && points.iter().all(|x| x.abs() < 1e-3));
+    }
+    let pvd = std::fs::read_to_string(out.join("particles.pvd")).unwrap();
+    for (k, t) in ["0e0", "1e-5", "2e-5"].iter().enumerate() {
+        assert!(
+            pvd.contains(&format!(
+                "timestep=\"{t}\" part=\"0\" file=\"particles_{k:06}.vtu\""
+            )),
+            "{pvd}"
+        );
+    }
 }

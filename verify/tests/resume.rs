@@ -60,6 +60,22 @@ fn run_to_end(scene: &Path, out: &Path) {
     assert!(st.success());
 }
 
+/// Waits (at most 2 minutes) until `written` says a checkpoint exists; the process `child` must
+/// not end before.
+fn wait_for_checkpoint(child: &mut std::process::Child, written: impl Fn() -> bool) {
+    let t0 = Instant::now();
+    while !written() {
+        assert!(
+            t0.elapsed() < Duration::from_secs(120),
+            "no checkpoint written"
+        );
+        if let Some(st) = child.try_wait().unwrap() {
+            panic!("ended before a checkpoint: {st:?}");
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
 /// Starts a run with frequent checkpoints and stops it with `signal` once a checkpoint exists.
 fn run_and_stop(scene: &Path, out: &Path, signal: &str) -> Option<i32> {
     let mut child = verify()
@@ -71,17 +87,7 @@ fn run_and_stop(scene: &Path, out: &Path, signal: &str) -> Option<i32> {
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
-    let t0 = Instant::now();
-    while !out.join("checkpoint.bin").exists() {
-        assert!(
-            t0.elapsed() < Duration::from_secs(60),
-            "no checkpoint written"
-        );
-        if let Some(st) = child.try_wait().unwrap() {
-            panic!("run ended before a checkpoint: {st:?}");
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    wait_for_checkpoint(&mut child, || out.join("checkpoint.bin").exists());
     std::thread::sleep(Duration::from_millis(150));
     if signal == "KILL" {
         child.kill().unwrap();
@@ -187,23 +193,12 @@ fn a_suite_stopped_by_sigterm_resumes_its_run_to_the_same_bits() {
     assert!(case(&whole).status().unwrap().success());
     let stopped = base.join("stopped");
     let mut child = case(&stopped).spawn().unwrap();
-    let t0 = Instant::now();
-    let has_checkpoint = || {
+    wait_for_checkpoint(&mut child, || {
         std::fs::read_dir(stopped.join("cube_drop")).is_ok_and(|d| {
             d.filter_map(|e| e.ok())
                 .any(|e| e.path().join("checkpoint.bin").exists())
         })
-    };
-    while !has_checkpoint() {
-        assert!(
-            t0.elapsed() < Duration::from_secs(120),
-            "no checkpoint written"
-        );
-        if let Some(st) = child.try_wait().unwrap() {
-            panic!("the suite ended before a checkpoint: {st:?}");
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    });
     Command::new("kill")
         .args(["-TERM", &child.id().to_string()])
         .status()

@@ -556,6 +556,9 @@ fn exit_of(r: anyhow::Result<i32>) -> i32 {
 
 /// Runs the study with this very binary for each point; the exit code.
 fn study(opts: &StudyOptions) -> anyhow::Result<i32> {
+    // Ctrl-C or SIGTERM reach the running point's own process, which checkpoints and exits
+    // 130; this one waits for it instead of dying first
+    let _ = interrupt_flag();
     run_all(opts, &std::env::current_exe()?)?;
     Ok(0)
 }

@@ -5,6 +5,7 @@ use crate::analytic::young_laplace;
 use crate::measure::oscillation;
 use crate::output::run_info::{RunInfo, Status};
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
+use crate::suite::runner::Interrupted;
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -38,7 +39,9 @@ pub struct PointResult {
 }
 
 /// Runs `point` in its own `verify run` process (unless a finished run of the same scene is in
-/// its folder and `force` is off), then measures it.
+/// its folder and `force` is off; a stopped one with a checkpoint is resumed), then measures
+/// it. A point stopped by Ctrl-C or SIGTERM (exit 130) stops the study: the same command
+/// resumes it.
 pub fn run_point(
     point: &Point,
     out: &Path,
@@ -48,27 +51,40 @@ pub fn run_point(
 ) -> anyhow::Result<PointResult> {
     let dir = out.join(point.id());
     let scene = point.scene();
-    let reusable =
-        RunInfo::read(&dir).is_ok_and(|i| i.status != Status::Running && i.scene == scene);
+    let info = RunInfo::read(&dir).ok().filter(|i| i.scene == scene);
+    let reusable = info
+        .as_ref()
+        .is_some_and(|i| matches!(i.status, Status::Completed | Status::Failed));
+    let resumable = info
+        .as_ref()
+        .is_some_and(|i| matches!(i.status, Status::Interrupted | Status::Running))
+        && crate::output::checkpoint::exists(&dir);
     if force || !reusable {
-        std::fs::create_dir_all(&dir)?;
-        let scene_file = dir.with_extension("toml");
-        std::fs::write(&scene_file, toml::to_string(&scene)?)?;
         let mut cmd = Command::new(exe);
-        cmd.arg("run")
-            .arg(&scene_file)
-            .arg("--out")
-            .arg(&dir)
-            .arg("--force");
+        cmd.arg("run");
+        if resumable && !force {
+            cmd.arg("--resume").arg(&dir);
+        } else {
+            std::fs::create_dir_all(&dir)?;
+            let scene_file = dir.with_extension("toml");
+            std::fs::write(&scene_file, toml::to_string(&scene)?)?;
+            cmd.arg(&scene_file).arg("--out").arg(&dir).arg("--force");
+        }
         if let Some(n) = threads {
             cmd.arg("--threads").arg(n.to_string());
         }
         // a point that blows up is a result (status failed), not an error of the study
-        let _ = cmd
+        let status = cmd
             .stdout(Stdio::null())
             .stderr(Stdio::null())
             .status()
             .with_context(|| format!("running {}", exe.display()))?;
+        if status.code() == Some(130) {
+            return Err(anyhow::Error::new(Interrupted(format!(
+                "study point {}",
+                point.id()
+            ))));
+        }
     }
     measure(point, &dir)
 }

@@ -255,6 +255,13 @@ enum Command {
         /// Exit 2 if there is any finding.
         #[arg(long)]
         strict: bool,
+        /// Build the particles and time this many steps: particles, neighbours, and the run's
+        /// estimated wall time and memory on this machine (0: findings and step only).
+        #[arg(long, value_name = "N", default_value = "20")]
+        sample_steps: u64,
+        /// Worker threads of the sample (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
     },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
@@ -314,7 +321,12 @@ fn main() {
     let code = match cli.command {
         Command::Run(args) => args.run(),
         Command::List { fidelity } => list(fidelity),
-        Command::Check { scene, strict } => exit_of(check_scene(&scene, strict)),
+        Command::Check {
+            scene,
+            strict,
+            sample_steps,
+            threads,
+        } => exit_of(check_scene(&scene, strict, sample_steps, threads)),
         Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
         Command::All { suite, compare } => {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
@@ -449,8 +461,14 @@ fn report(out: &Path) -> anyhow::Result<i32> {
     Ok(0)
 }
 
-/// `verify check`: the findings and the step estimate; exit 2 under `strict` with findings.
-fn check_scene(path: &Path, strict: bool) -> anyhow::Result<i32> {
+/// `verify check`: the findings, the step estimate and a timed sample of `sample_steps` steps;
+/// exit 2 under `strict` with findings.
+fn check_scene(
+    path: &Path,
+    strict: bool,
+    sample_steps: u64,
+    threads: Option<usize>,
+) -> anyhow::Result<i32> {
     let scene = match load_scene(path) {
         Ok(s) => s,
         Err(e) => {
@@ -484,7 +502,53 @@ fn check_scene(path: &Path, strict: bool) -> anyhow::Result<i32> {
     for f in &findings {
         println!("warning: {f}");
     }
+    if sample_steps > 0 {
+        let mut pool = rayon::ThreadPoolBuilder::new();
+        if let Some(n) = threads {
+            pool = pool.num_threads(n);
+        }
+        // a sample that fails is what the run would do: said, not an error of the check
+        if let Err(e) = pool.build()?.install(|| sample(&scene, sample_steps)) {
+            println!("sample: the run fails: {e:#}");
+        }
+    }
     Ok(if strict && !findings.is_empty() { 2 } else { 0 })
+}
+
+/// Builds `scene`'s particles, times `steps` steps on the current thread pool, and prints the
+/// particles, neighbours, the rate, and the whole run's estimated wall time and memory.
+fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
+    let before = verify::output::run_info::peak_memory_bytes();
+    let mut sim = solver::Simulation::new(scene)?;
+    let n = sim.particles.n_fluid;
+    println!(
+        "particles: {n} fluid, {} wall; {} threads",
+        sim.particles.n_wall(),
+        rayon::current_num_threads()
+    );
+    let t0 = std::time::Instant::now();
+    let mut taken = 0;
+    while taken < steps && sim.time_s < scene.time.end {
+        sim.step(scene.time.end - sim.time_s)?;
+        taken += 1;
+    }
+    let wall = t0.elapsed().as_secs_f64();
+    let rate = (taken as f64 * n as f64) / wall.max(1e-9);
+    let total_steps = scene.time.end / sim.next_dt();
+    println!(
+        "sample: {taken} steps in {wall:.2} s, {rate:.3e} particle-steps/s, {:.0} neighbours per particle; the whole run: about {total_steps:.3e} steps, {:.3e} s wall on this machine",
+        sim.mean_neighbours(),
+        total_steps * n as f64 / rate
+    );
+    if let (Some(b), Some(a)) = (before, verify::output::run_info::peak_memory_bytes()) {
+        println!(
+            "memory: {:.0} MB peak, {:.0} B per particle (fluid and wall) above the {:.0} MB the program holds before the scene",
+            a as f64 / 1e6,
+            a.saturating_sub(b) as f64 / (n + sim.particles.n_wall()).max(1) as f64,
+            b as f64 / 1e6
+        );
+    }
+    Ok(())
 }
 
 /// `verify slab-tension`: the settings are the scene's own unless given.

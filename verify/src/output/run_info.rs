@@ -164,7 +164,7 @@ impl RunInfo {
 
 /// The process's peak resident memory [bytes], from `/proc/self/status` (`VmHWM`); `None`
 /// where that file does not exist.
-fn peak_memory_bytes() -> Option<u64> {
+pub fn peak_memory_bytes() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;

@@ -5,7 +5,9 @@ use serde::{Deserialize, Serialize};
 /// How far a metric may lie from its reference, and why.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Tolerance {
-    /// Largest accepted `|value − reference|`, in the metric's unit.
+    /// Largest accepted `|value − reference|`, in the metric's unit (NaN, `null` in JSON, fails
+    /// every value).
+    #[serde(with = "nan_as_null")]
     pub abs: f64,
     /// Where the tolerance comes from.
     pub source: String,

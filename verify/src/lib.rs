@@ -6,7 +6,7 @@
 //!
 //! The modules are layered; each imports only those before it: [`analytic`], [`measure`],
 //! [`diagnostics`] and [`output`] (leaves) ← [`preflight`] ← [`run`] ← [`suite`] ← [`report`] ←
-//! [`cases`] ← [`study`] ← the command line. `tests/layers.rs` fails on any import circle between them.
+//! [`cases`] ← [`study`] ← [`plan`] ← the command line. `tests/layers.rs` fails on any import circle between them.
 #![deny(missing_docs)]
 
 pub mod analytic;
@@ -14,6 +14,7 @@ pub mod cases;
 pub mod diagnostics;
 pub mod measure;
 pub mod output;
+pub mod plan;
 pub mod preflight;
 pub mod report;
 pub mod run;

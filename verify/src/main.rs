@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use verify::cases;
 use verify::diagnostics::{lattice_moduli, slab_tension};
+use verify::plan::{self, TaskOptions};
 use verify::preflight;
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
@@ -263,11 +264,115 @@ enum Command {
         #[arg(long, value_name = "N")]
         threads: Option<usize>,
     },
+    /// Write the suite, the study or a sweep as independent tasks with a SLURM array job:
+    /// run them with `verify task` (in any order, anywhere), then `verify collect`.
+    Plan {
+        #[command(subcommand)]
+        which: PlanKind,
+    },
+    /// Run task N of a plan: skipped if finished, resumed from its checkpoint if stopped.
+    Task {
+        /// The plan's folder.
+        plan: PathBuf,
+        /// The task (0-based; `$SLURM_ARRAY_TASK_ID` in an array job).
+        #[arg(long)]
+        index: usize,
+        /// Worker threads (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        /// Write the run's checkpoint every M minutes of wall time.
+        #[arg(long, value_name = "M", default_value = "10")]
+        checkpoint_minutes: f64,
+    },
+    /// Measure a plan's finished runs and write its summaries (exit 5 if some tasks are not
+    /// finished: they are named and left out).
+    Collect {
+        /// The plan's folder.
+        plan: PathBuf,
+    },
+    /// Run a scene over every combination of values of some keys, here and now: the plan
+    /// (`verify plan sweep`), every task in order, then `sweep.csv`.
+    Sweep {
+        /// The scene (TOML).
+        scene: PathBuf,
+        /// A key and its values, e.g. `--set discretisation.l0=1e-4,7e-5` (repeatable: every
+        /// combination; commas inside [..] or quotes do not split).
+        #[arg(long = "set", value_name = "KEY=V1,V2", required = true)]
+        set: Vec<String>,
+        /// Output folder (the plan's).
+        #[arg(long)]
+        out: PathBuf,
+        /// Worker threads per run (default: all cores).
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+    },
     /// Redraw every plot and table from saved runs, without simulating.
     Report {
         /// Output folder of a previous suite run.
         #[arg(long, default_value = "reports")]
         out: PathBuf,
+    },
+}
+
+/// Where a plan goes and how its SLURM array job asks for resources.
+#[derive(clap::Args)]
+struct PlanArgs {
+    /// The plan's folder (tasks write their results into it).
+    #[arg(long)]
+    out: PathBuf,
+    /// Write over another plan in the folder.
+    #[arg(long)]
+    force: bool,
+    /// Cores per task (`#SBATCH --cpus-per-task`), the run's worker threads.
+    #[arg(long, value_name = "N", default_value = "2")]
+    cpus_per_task: usize,
+    /// Time limit per task (`#SBATCH --time`); a task stopped at it resumes when submitted again.
+    #[arg(long, value_name = "D-HH:MM:SS", default_value = "04:00:00")]
+    time: String,
+    /// Partition (`#SBATCH --partition`).
+    #[arg(long)]
+    partition: Option<String>,
+}
+
+#[derive(Subcommand)]
+enum PlanKind {
+    /// The suite's runs (all cases, or those named), as `verify all` / `verify case` runs them.
+    Suite {
+        /// Case names (default: every case).
+        names: Vec<String>,
+        /// smoke, standard (default), paper.
+        #[arg(long, value_enum, default_value = "standard")]
+        fidelity: Fidelity,
+        /// Set a scene key in every run (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Refuse runs with pre-flight findings the case does not accept.
+        #[arg(long)]
+        strict: bool,
+        #[command(flatten)]
+        plan: PlanArgs,
+    },
+    /// The accuracy–cost study's points.
+    Study {
+        /// reduced, standard (default), full.
+        #[arg(long, value_enum, default_value = "standard")]
+        grid: verify::study::Grid,
+        /// Leave out the points with more fluid particles than N.
+        #[arg(long, value_name = "N")]
+        max_particles: Option<usize>,
+        #[command(flatten)]
+        plan: PlanArgs,
+    },
+    /// A scene over every combination of values of some keys.
+    Sweep {
+        /// The scene (TOML).
+        scene: PathBuf,
+        /// A key and its values, e.g. `--set liquid.matte.surface_tension=0.3,0.4`
+        /// (repeatable: every combination).
+        #[arg(long = "set", value_name = "KEY=V1,V2", required = true)]
+        set: Vec<String>,
+        #[command(flatten)]
+        plan: PlanArgs,
     },
 }
 
@@ -332,6 +437,28 @@ fn main() {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
         }
         Command::Report { out } => exit_of(report(&out)),
+        Command::Plan { which } => exit_of(write_plan(which)),
+        Command::Task {
+            plan,
+            index,
+            threads,
+            checkpoint_minutes,
+        } => {
+            let opts = TaskOptions {
+                threads,
+                checkpoint_minutes: Some(checkpoint_minutes),
+                interrupt: Some(interrupt_flag()),
+                progress: true,
+            };
+            exit_of(plan::run_task(&plan, index, &opts).map(|()| 0))
+        }
+        Command::Collect { plan } => exit_of(collect(&plan)),
+        Command::Sweep {
+            scene,
+            set,
+            out,
+            threads,
+        } => exit_of(sweep(&scene, &set, &out, threads)),
         Command::LatticeModuli {
             kernel,
             h_over_l0,
@@ -607,6 +734,10 @@ fn interrupt_flag() -> Arc<AtomicBool> {
 fn exit_of(r: anyhow::Result<i32>) -> i32 {
     match r {
         Ok(code) => code,
+        Err(e) if e.downcast_ref::<plan::InputError>().is_some() => {
+            eprintln!("error: {e}");
+            2
+        }
         Err(e) if e.downcast_ref::<runner::Interrupted>().is_some() => {
             eprintln!("{e}");
             130
@@ -625,4 +756,92 @@ fn study(opts: &StudyOptions) -> anyhow::Result<i32> {
     let _ = interrupt_flag();
     run_all(opts, &std::env::current_exe()?)?;
     Ok(0)
+}
+
+/// `verify plan …`: writes the plan and says how to run it.
+fn write_plan(which: PlanKind) -> anyhow::Result<i32> {
+    let (kind, tasks, args) = match which {
+        PlanKind::Suite {
+            names,
+            fidelity,
+            set,
+            strict,
+            plan: args,
+        } => {
+            let (k, t) = plan::suite_tasks(fidelity, &names, &set, strict)?;
+            (k, t, args)
+        }
+        PlanKind::Study {
+            grid,
+            max_particles,
+            plan: args,
+        } => {
+            let (k, t) = plan::study_tasks(grid, max_particles);
+            (k, t, args)
+        }
+        PlanKind::Sweep {
+            scene,
+            set,
+            plan: args,
+        } => {
+            let base = load_scene(&scene).map_err(|e| plan::InputError(e.to_string()))?;
+            let (k, t) = plan::sweep_tasks(&base, &scene.to_string_lossy(), &set)?;
+            (k, t, args)
+        }
+    };
+    let slurm = plan::SlurmOptions {
+        exe: std::env::current_exe()?,
+        cpus_per_task: args.cpus_per_task,
+        time: args.time,
+        partition: args.partition,
+    };
+    let p = plan::write_plan(&args.out, kind, tasks, &slurm, args.force)?;
+    let d = args.out.display();
+    println!("{d}: {} task(s)", p.tasks.len());
+    println!(
+        "  one task:   verify task {d} --index N   (N = 0 … {})",
+        p.tasks.len() - 1
+    );
+    println!("  on SLURM:   bash {d}/submit.sh");
+    println!("  then:       verify collect {d}");
+    Ok(0)
+}
+
+/// `verify collect PLAN`: the summaries; exit 5 if some tasks are not finished.
+fn collect(dir: &Path) -> anyhow::Result<i32> {
+    let c = plan::collect(dir)?;
+    eprintln!("summary: {}", c.summary.display());
+    if c.unfinished.is_empty() {
+        return Ok(0);
+    }
+    eprintln!(
+        "{} task(s) not finished, left out: {}",
+        c.unfinished.len(),
+        c.unfinished.join(", ")
+    );
+    Ok(5)
+}
+
+/// `verify sweep`: the plan, every task in order, the collection.
+fn sweep(scene: &Path, set: &[String], out: &Path, threads: Option<usize>) -> anyhow::Result<i32> {
+    let base = load_scene(scene).map_err(|e| plan::InputError(e.to_string()))?;
+    let (kind, tasks) = plan::sweep_tasks(&base, &scene.to_string_lossy(), set)?;
+    let slurm = plan::SlurmOptions {
+        exe: std::env::current_exe()?,
+        cpus_per_task: threads.unwrap_or(2),
+        time: "04:00:00".into(),
+        partition: None,
+    };
+    let p = plan::write_plan(out, kind, tasks, &slurm, false)?;
+    let opts = TaskOptions {
+        threads,
+        checkpoint_minutes: Some(10.0),
+        interrupt: Some(interrupt_flag()),
+        progress: true,
+    };
+    for (k, t) in p.tasks.iter().enumerate() {
+        eprintln!("[{}/{}] {}", k + 1, p.tasks.len(), t.label);
+        plan::run_task(out, k, &opts)?;
+    }
+    collect(out)
 }

@@ -1,12 +1,13 @@
-//! The suite's summaries: `summary.md` (what a reviewer reads first) and `summary.csv`
-//! (machine-readable, also the regression baseline format), from every case measured so far.
+//! The suite's summaries: `summary.md` (what a reviewer reads first), `summary.csv`
+//! (machine-readable results, also the regression baseline format; the same bits for the same
+//! revision) and `costs.csv` (each metric's run's wall time), from every case measured so far.
 
 use crate::suite::compare::{self, summary_csv, Regression};
 use crate::suite::{runner, Case, Fidelity, Metric};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Rewrites `OUT/summary.md` and `OUT/summary.csv` from every one of `cases` measured so far
+/// Rewrites `OUT/summary.md`, `OUT/summary.csv` and `OUT/costs.csv` from every one of `cases` measured so far
 /// under `out`; with a baseline, also compares and returns the regressions.
 pub fn write_all(
     out: &Path,
@@ -20,6 +21,7 @@ pub fn write_all(
         None => None,
     };
     summary_csv::write(&out.join("summary.csv"), &metrics)?;
+    summary_csv::write_costs(&out.join("costs.csv"), &metrics)?;
     write_markdown(
         &out.join("summary.md"),
         fidelity,

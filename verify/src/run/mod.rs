@@ -105,3 +105,46 @@ pub fn resume_observed(
         Run::resumed(&opts.out_dir, threads)?.drive(opts, observers)
     })
 }
+
+/// What an output folder holds of a scene's run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Saved {
+    /// A run of exactly this scene that ended (completed, or failed: a result either way).
+    Finished,
+    /// A run of exactly this scene stopped with a checkpoint to resume from.
+    Stopped,
+    /// Nothing of this scene's run (no record, another scene, or a stopped run without a
+    /// checkpoint).
+    Nothing,
+}
+
+/// What `dir` holds of `scene`'s run.
+pub fn saved(dir: &Path, scene: &Scene) -> Saved {
+    use crate::output::run_info::Status;
+    match RunInfo::read(dir) {
+        Ok(info) if info.scene != *scene => Saved::Nothing,
+        Ok(info) if matches!(info.status, Status::Completed | Status::Failed) => Saved::Finished,
+        Ok(_) if crate::output::checkpoint::exists(dir) => Saved::Stopped,
+        _ => Saved::Nothing,
+    }
+}
+
+/// Runs `scene` into `opts.out_dir` unless a finished run of it is there (then `None`), and
+/// resumes it if it was stopped with a checkpoint; `opts.force` runs it afresh either way.
+pub fn ensure(
+    scene: &Scene,
+    scene_file: &Path,
+    opts: &RunOptions,
+) -> Result<Option<RunInfo>, RunError> {
+    match (opts.force, saved(&opts.out_dir, scene)) {
+        (false, Saved::Finished) => Ok(None),
+        (false, Saved::Stopped) => resume(opts).map(Some),
+        _ => {
+            let fresh = RunOptions {
+                force: true,
+                ..opts.clone()
+            };
+            run_scene(scene, scene_file, &fresh).map(Some)
+        }
+    }
+}

@@ -14,4 +14,4 @@ mod run_all;
 pub mod summary;
 
 pub use grid::{Grid, Point, Problem, Variant};
-pub use run_all::{run_all, StudyOptions};
+pub use run_all::{run_all, selected, write_outputs, StudyOptions};

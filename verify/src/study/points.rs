@@ -5,6 +5,7 @@ use crate::analytic::young_laplace;
 use crate::measure::oscillation;
 use crate::output::run_info::{RunInfo, Status};
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
+use crate::run::{RunError, RunOptions, Saved};
 use crate::suite::runner::Interrupted;
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
@@ -51,15 +52,9 @@ pub fn run_point(
 ) -> anyhow::Result<PointResult> {
     let dir = out.join(point.id());
     let scene = point.scene();
-    let info = RunInfo::read(&dir).ok().filter(|i| i.scene == scene);
-    let reusable = info
-        .as_ref()
-        .is_some_and(|i| matches!(i.status, Status::Completed | Status::Failed));
-    let resumable = info
-        .as_ref()
-        .is_some_and(|i| matches!(i.status, Status::Interrupted | Status::Running))
-        && crate::output::checkpoint::exists(&dir);
-    if force || !reusable {
+    let saved = crate::run::saved(&dir, &scene);
+    let resumable = saved == Saved::Stopped;
+    if force || saved != Saved::Finished {
         let mut cmd = Command::new(exe);
         cmd.arg("run");
         if resumable && !force {
@@ -87,6 +82,30 @@ pub fn run_point(
         }
     }
     measure(point, &dir)
+}
+
+/// Runs `point` in this process into `OUT/ID` with `opts` (its `out_dir` is set here): skipped
+/// if finished, resumed if stopped with a checkpoint — the way a plan's task runs it, so that a
+/// scheduler's signal reaches the run itself. Returns whether it simulated.
+pub fn run_point_here(point: &Point, out: &Path, opts: &RunOptions) -> anyhow::Result<bool> {
+    let dir = out.join(point.id());
+    std::fs::create_dir_all(&dir)?;
+    let scene_file = dir.with_extension("toml");
+    crate::output::atomic_write(&scene_file, toml::to_string(&point.scene())?.as_bytes())?;
+    let opts = RunOptions {
+        out_dir: dir,
+        ..opts.clone()
+    };
+    match crate::run::ensure(&point.scene(), &scene_file, &opts) {
+        Ok(ran) => Ok(ran.is_some()),
+        Err(RunError::Interrupted(_)) => Err(anyhow::Error::new(Interrupted(format!(
+            "study point {}",
+            point.id()
+        )))),
+        // a point that blows up is a result (status failed), not an error of the study
+        Err(RunError::Simulation(_)) => Ok(true),
+        Err(e) => Err(anyhow::anyhow!("study point {}: {e}", point.id())),
+    }
 }
 
 /// The settled height of a drop on the plate [m]: its highest particle centre + l0/2 (the wall

@@ -1,7 +1,8 @@
 //! The whole study: every point of a grid (up to a particle count) run in its own process and
 //! measured, then its outputs written.
 
-use super::{points, summary, Grid};
+use super::points::PointResult;
+use super::{points, summary, Grid, Point};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -20,19 +21,19 @@ pub struct StudyOptions {
     pub max_particles: Option<usize>,
 }
 
+/// The points of `grid` run (those up to `max_particles` fluid particles) and those left out.
+pub fn selected(grid: Grid, max_particles: Option<usize>) -> (Vec<Point>, Vec<Point>) {
+    grid.points()
+        .into_iter()
+        .partition(|p| max_particles.map_or(true, |m| p.estimated_particles() <= m))
+}
+
 /// Runs (or reuses) and measures every point with `exe`, the `verify` binary, reporting each
 /// on stderr; writes `points.csv`, the plots and `summary.md` into `opts.out`.
 pub fn run_all(opts: &StudyOptions, exe: &Path) -> anyhow::Result<()> {
     let out = &opts.out;
     std::fs::create_dir_all(out)?;
-    let (all, left_out): (Vec<_>, Vec<_>) =
-        opts.grid
-            .points()
-            .into_iter()
-            .partition(|p| match opts.max_particles {
-                Some(m) => p.estimated_particles() <= m,
-                None => true,
-            });
+    let (all, left_out) = selected(opts.grid, opts.max_particles);
     let mut results = Vec::new();
     for (k, p) in all.iter().enumerate() {
         let r = points::run_point(p, out, exe, opts.threads, opts.force)?;
@@ -48,11 +49,23 @@ pub fn run_all(opts: &StudyOptions, exe: &Path) -> anyhow::Result<()> {
         );
         results.push(r);
     }
-    summary::write(out, &results, &opts.grid.variants())?;
+    write_outputs(out, opts.grid, opts.max_particles, &results, &left_out)
+}
+
+/// Writes `points.csv`, the plots and `summary.md` of measured `results` into `out`, listing
+/// the points `left_out` by `max_particles`.
+pub fn write_outputs(
+    out: &Path,
+    grid: Grid,
+    max_particles: Option<usize>,
+    results: &[PointResult],
+    left_out: &[Point],
+) -> anyhow::Result<()> {
+    summary::write(out, results, &grid.variants())?;
     if !left_out.is_empty() {
         // problems that share runs (the cube's period and damping) share their ids: once each
         let mut ids: Vec<String> = Vec::new();
-        for p in &left_out {
+        for p in left_out {
             let id = format!("`{}`", p.id());
             if !ids.contains(&id) {
                 ids.push(id);
@@ -64,7 +77,7 @@ pub fn run_all(opts: &StudyOptions, exe: &Path) -> anyhow::Result<()> {
         writeln!(
             f,
             "\n**Left out of this run** (`--max-particles {}`): {} run(s) — {}.",
-            opts.max_particles.unwrap_or(0),
+            max_particles.unwrap_or(0),
             ids.len(),
             ids.join(", ")
         )?;

@@ -1,6 +1,7 @@
 //! Scene keys set from the command line (`--set discretisation.kernel=quintic_spline`): every
 //! run of a case with one setting changed, e.g. to compare a kernel or a potential on the
-//! checks. A number indexes an array of tables (`liquid.0.viscosity=0.0`). The value is read
+//! checks. A number indexes an array of tables (`liquid.0.viscosity=0.0`), and so does a name
+//! (`liquid.matte.viscosity=0.0`: the table whose `name` it is). The value is read
 //! as TOML (`1.3`, `true`, `"text"`); a bare word that is not TOML is taken as a string. The changed scene is validated like a scene file, and each run's
 //! record stores the scene it ran.
 
@@ -37,6 +38,42 @@ impl std::str::FromStr for SceneOverride {
     }
 }
 
+impl std::fmt::Display for SceneOverride {
+    /// `KEY=VALUE` with the value as TOML: parses back to the same override.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}={}", self.key, self.value)
+    }
+}
+
+/// Splits the values of a sweep's `KEY=V1,V2,…` at the commas outside brackets and quotes
+/// (`gravity=[0,0,-9.81],[0,0,0]` is two values); every value parsed as in [`SceneOverride`].
+pub fn parse_values(s: &str) -> Result<Vec<SceneOverride>, String> {
+    let (key, raw) = s
+        .split_once('=')
+        .ok_or_else(|| format!("`{s}`: expected KEY=VALUE[,VALUE…]"))?;
+    let mut parts = Vec::new();
+    let (mut depth, mut quote, mut start) = (0i32, None, 0);
+    for (i, c) in raw.char_indices() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), _) => {}
+            (None, '"' | '\'') => quote = Some(c),
+            (None, '[' | '{') => depth += 1,
+            (None, ']' | '}') => depth -= 1,
+            (None, ',') if depth == 0 => {
+                parts.push(&raw[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&raw[start..]);
+    if parts.iter().any(|p| p.trim().is_empty()) {
+        return Err(format!("`{s}`: an empty value"));
+    }
+    parts.iter().map(|v| format!("{key}={v}").parse()).collect()
+}
+
 /// `scene` with every override applied in order; an unknown key or a bad value is refused
 /// with the scene's own message.
 pub fn apply(scene: &Scene, overrides: &[SceneOverride]) -> anyhow::Result<Scene> {
@@ -49,13 +86,29 @@ pub fn apply(scene: &Scene, overrides: &[SceneOverride]) -> anyhow::Result<Scene
         for p in o.key.split('.') {
             v = match v {
                 toml::Value::Array(a) => {
+                    let names: Vec<String> = a
+                        .iter()
+                        .filter_map(|t| t.get("name").and_then(toml::Value::as_str))
+                        .map(|n| format!("`{n}`"))
+                        .collect();
                     let n = a.len();
-                    p.parse::<usize>()
-                        .ok()
-                        .and_then(|k| a.get_mut(k))
-                        .ok_or_else(|| {
-                            anyhow::anyhow!("--set {}: `{p}` is not an index below {n}", o.key)
-                        })?
+                    let k = match p.parse::<usize>() {
+                        Ok(k) => Some(k),
+                        Err(_) => a
+                            .iter()
+                            .position(|t| t.get("name").and_then(toml::Value::as_str) == Some(p)),
+                    };
+                    k.and_then(|k| a.get_mut(k)).ok_or_else(|| {
+                        anyhow::anyhow!(
+                            "--set {}: `{p}` is neither an index below {n} nor a name ({})",
+                            o.key,
+                            if names.is_empty() {
+                                "none".to_string()
+                            } else {
+                                names.join(", ")
+                            }
+                        )
+                    })?
                 }
                 toml::Value::Table(t) => t
                     .entry(p.to_string())
@@ -105,6 +158,34 @@ mod tests {
         let bad: SceneOverride = "discretisation.potential_order=7".parse().expect("parse");
         assert!(apply(&scene(), &[bad]).is_err());
         assert!("no_equals".parse::<SceneOverride>().is_err());
+        // a table of an array by its name; an unknown name lists the names
+        let o: SceneOverride = "liquid.matte.viscosity=0.5".parse().expect("parse");
+        assert_eq!(
+            apply(&scene(), &[o]).expect("valid").liquids[0].viscosity,
+            0.5
+        );
+        let bad: SceneOverride = "liquid.slag.viscosity=0.5".parse().expect("parse");
+        let e = apply(&scene(), &[bad]).expect_err("no slag").to_string();
+        assert!(e.contains("`matte`"), "{e}");
         assert!("a..b=1".parse::<SceneOverride>().is_err());
+    }
+
+    #[test]
+    fn sweep_values_split_outside_brackets_and_quotes() {
+        let v = parse_values("time.end=1e-3, 2e-3").expect("two");
+        assert_eq!(v.len(), 2);
+        assert_eq!(v[1].value, toml::Value::Float(2e-3));
+        let v = parse_values("gravity=[0,0,-9.81],[0,0,0]").expect("two arrays");
+        assert_eq!(v.len(), 2);
+        assert!(v[0].value.is_array());
+        let v = parse_values(r#"liquid.0.name="a,b",c"#).expect("quoted comma");
+        assert_eq!(v[0].value, toml::Value::String("a,b".into()));
+        assert_eq!(v.len(), 2);
+        assert!(parse_values("a=1,,2").is_err());
+        assert!(parse_values("a").is_err());
+        // Display parses back to the same override
+        for o in parse_values("discretisation.kernel=quintic_spline,2.5").expect("two") {
+            assert_eq!(o.to_string().parse::<SceneOverride>().expect("back"), o);
+        }
     }
 }

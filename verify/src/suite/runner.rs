@@ -6,7 +6,7 @@ mod saved;
 mod snapshots;
 
 use super::compare::summary_csv;
-use super::{Case, Fidelity, Metric};
+use super::{Case, Fidelity, Metric, RunSpec};
 use crate::output::run_info::RunInfo;
 use crate::run::{resume_observed, run_scene_observed, Observer, RunError, RunOptions};
 use anyhow::Context;
@@ -69,8 +69,15 @@ pub struct SuiteRecord {
 /// Simulates the missing runs of `case`, then measures it; returns its metrics and writes
 /// `OUT/CASE/summary.csv`.
 pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metric>> {
-    let dir = opts.out.join(case.name());
-    std::fs::create_dir_all(&dir)?;
+    for spec in &specs_of(case, opts)? {
+        run_spec(case, spec, opts)?;
+    }
+    analyse_case(case, opts.fidelity, &opts.out)
+}
+
+/// The runs of `case` at `opts.fidelity` as the suite runs them: `--only` kept, `--set`
+/// applied, each checked to build the effects the case declares.
+pub fn specs_of(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<RunSpec>> {
     let mut specs = case.runs(opts.fidelity);
     if !opts.only.is_empty() {
         specs.retain(|s| opts.only.contains(&s.id));
@@ -89,52 +96,70 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
                 spec.id
             );
         }
-        let rdir = dir.join(&spec.id);
-        if !opts.force && saved::reusable(&rdir, spec) {
-            continue;
-        }
-        let resume = !opts.force && saved::resumable(&rdir, spec);
-        if opts.progress {
-            let how = if resume { " (resumed)" } else { "" };
-            eprintln!("{} / {}{how}", case.name(), spec.id);
-        }
-        let observers: Vec<Box<dyn Observer + '_>> = vec![
-            Box::new(probes::Probes::of(case)),
-            Box::new(snapshots::Snapshots::at(spec.snapshot_times_s.clone())),
-        ];
-        let label = PathBuf::from(format!("{}/{}", case.name(), spec.id));
-        let ropts = RunOptions {
-            out_dir: rdir.clone(),
-            vtk_every: None,
-            threads: opts.threads,
-            force: true,
-            progress: opts.progress,
-            strict: opts.strict,
-            accepted: case.accepted_findings(opts.fidelity),
-            checkpoint_minutes: opts.checkpoint_minutes,
-            interrupt: opts.interrupt.clone(),
-            ..Default::default()
-        };
-        let result = if resume {
-            resume_observed(&ropts, observers)
-        } else {
-            run_scene_observed(&spec.scene, &label, &ropts, observers)
-        };
-        match result {
-            Ok(_) => {}
-            Err(RunError::Interrupted(_)) => {
-                return Err(anyhow::Error::new(Interrupted(format!(
-                    "{}/{}",
-                    case.name(),
-                    spec.id
-                ))))
-            }
-            // a run that fails is a result: its record says so and the case reports it
-            Err(RunError::Simulation(e)) => eprintln!("{}/{}: {e}", case.name(), spec.id),
-            Err(e) => return Err(anyhow::anyhow!("{}/{}: {e}", case.name(), spec.id)),
-        }
     }
-    analyse_case(case, opts.fidelity, &opts.out)
+    Ok(specs)
+}
+
+/// The folder of `case`'s run `spec` under `out`.
+pub fn run_dir(out: &Path, case: &dyn Case, spec: &RunSpec) -> PathBuf {
+    out.join(case.name()).join(&spec.id)
+}
+
+/// Whether the run `spec` of `case` is finished in `out` (its scene, its final state).
+pub fn is_finished(out: &Path, case: &dyn Case, spec: &RunSpec) -> bool {
+    saved::reusable(&run_dir(out, case, spec), spec)
+}
+
+/// Simulates `case`'s run `spec` into `OUT/CASE/ID` with the case's probes and snapshots —
+/// resumed from its checkpoint if it was stopped, skipped if it is finished (unless
+/// `opts.force`). A simulation that fails is a result (its record says so), not an error.
+pub fn run_spec(case: &dyn Case, spec: &RunSpec, opts: &SuiteOptions) -> anyhow::Result<()> {
+    let rdir = run_dir(&opts.out, case, spec);
+    std::fs::create_dir_all(&rdir)?;
+    if !opts.force && saved::reusable(&rdir, spec) {
+        return Ok(());
+    }
+    let resume = !opts.force && saved::resumable(&rdir, spec);
+    if opts.progress {
+        let how = if resume { " (resumed)" } else { "" };
+        eprintln!("{} / {}{how}", case.name(), spec.id);
+    }
+    let observers: Vec<Box<dyn Observer + '_>> = vec![
+        Box::new(probes::Probes::of(case)),
+        Box::new(snapshots::Snapshots::at(spec.snapshot_times_s.clone())),
+    ];
+    let label = PathBuf::from(format!("{}/{}", case.name(), spec.id));
+    let ropts = RunOptions {
+        out_dir: rdir.clone(),
+        vtk_every: None,
+        threads: opts.threads,
+        force: true,
+        progress: opts.progress,
+        strict: opts.strict,
+        accepted: case.accepted_findings(opts.fidelity),
+        checkpoint_minutes: opts.checkpoint_minutes,
+        interrupt: opts.interrupt.clone(),
+        ..Default::default()
+    };
+    let result = if resume {
+        resume_observed(&ropts, observers)
+    } else {
+        run_scene_observed(&spec.scene, &label, &ropts, observers)
+    };
+    match result {
+        Ok(_) => {}
+        Err(RunError::Interrupted(_)) => {
+            return Err(anyhow::Error::new(Interrupted(format!(
+                "{}/{}",
+                case.name(),
+                spec.id
+            ))))
+        }
+        // a run that fails is a result: its record says so and the case reports it
+        Err(RunError::Simulation(e)) => eprintln!("{}/{}: {e}", case.name(), spec.id),
+        Err(e) => return Err(anyhow::anyhow!("{}/{}: {e}", case.name(), spec.id)),
+    }
+    Ok(())
 }
 
 /// Measures `case` from the runs saved under `out` (no simulation).

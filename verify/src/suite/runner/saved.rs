@@ -2,27 +2,21 @@
 //! record, time series, probes and particle dumps.
 
 use super::snapshots::{snapshot_name, FINAL};
-use crate::output::run_info::{RunInfo, Status};
+use crate::output::run_info::RunInfo;
 use crate::output::timeseries::Table;
+use crate::run::Saved;
 use crate::suite::dump::Dump;
 use crate::suite::{RunData, RunSpec};
 use std::path::Path;
 
-/// Whether `dir` holds a finished run of exactly `spec`'s scene.
+/// Whether `dir` holds a finished run of exactly `spec`'s scene, with its final state.
 pub(super) fn reusable(dir: &Path, spec: &RunSpec) -> bool {
-    RunInfo::read(dir).is_ok_and(|info| {
-        matches!(info.status, Status::Completed | Status::Failed)
-            && info.scene == spec.scene
-            && dir.join(FINAL).exists()
-    })
+    crate::run::saved(dir, &spec.scene) == Saved::Finished && dir.join(FINAL).exists()
 }
 
 /// Whether `dir` holds a stopped run of exactly `spec`'s scene with a checkpoint to resume.
 pub(super) fn resumable(dir: &Path, spec: &RunSpec) -> bool {
-    crate::output::checkpoint::exists(dir)
-        && RunInfo::read(dir).is_ok_and(|info| {
-            matches!(info.status, Status::Interrupted | Status::Running) && info.scene == spec.scene
-        })
+    crate::run::saved(dir, &spec.scene) == Saved::Stopped
 }
 
 /// The wall particles of a scene as a dump (empty if it has none).

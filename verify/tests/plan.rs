@@ -1,0 +1,294 @@
+//! Plans run as independent tasks give the serial results: the smoke suite's tasks run one by
+//! one in a shuffled order, one of them stopped by SIGTERM (as a scheduler does at its time
+//! limit) and run again, collect to a `summary.csv` byte-identical to `verify all`'s. Bad input
+//! to the plan commands is refused with exit 2 and a message that names it.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("verify-plan-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn verify() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_verify"))
+}
+
+/// The tasks' labels and folders of the plan in `plan`.
+fn tasks(plan: &Path) -> Vec<(String, String)> {
+    let text = std::fs::read_to_string(plan.join("plan.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["tasks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| {
+            (
+                t["label"].as_str().unwrap().to_string(),
+                t["dir"].as_str().unwrap().to_string(),
+            )
+        })
+        .collect()
+}
+
+/// 0..n in an order fixed by a small linear congruential generator (Fisher–Yates).
+fn shuffled(n: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = (0..n).collect();
+    let mut x: u64 = 0x5eed;
+    for i in (1..n).rev() {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        v.swap(i, (x >> 33) as usize % (i + 1));
+    }
+    v
+}
+
+fn task(plan: &Path, index: usize) -> Command {
+    let mut c = verify();
+    c.arg("task")
+        .arg(plan)
+        .args(["--index", &index.to_string(), "--threads", "2"]);
+    c
+}
+
+#[test]
+fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_summary() {
+    let base = dir("suite");
+    let serial = base.join("serial");
+    let st = verify()
+        .args(["all", "--fidelity", "smoke", "--threads", "2"])
+        .arg("--out")
+        .arg(&serial)
+        .stderr(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(st.success());
+
+    let plan = base.join("plan");
+    let st = verify()
+        .args(["plan", "suite", "--fidelity", "smoke"])
+        .arg("--out")
+        .arg(&plan)
+        .stdout(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(st.success());
+    for f in ["run.sbatch", "submit.sh"] {
+        assert!(plan.join(f).exists(), "{f}");
+    }
+    let list = tasks(&plan);
+    // the longest smoke run (about 9 s on 2 cores) is the one stopped
+    let stopped = list
+        .iter()
+        .position(|(l, _)| l == "equal_doublet/sigma12_0.40")
+        .expect("the task exists");
+    for i in shuffled(list.len()) {
+        if i != stopped {
+            let st = task(&plan, i).stderr(Stdio::null()).status().unwrap();
+            assert!(st.success(), "task {i} ({})", list[i].0);
+            continue;
+        }
+        let run_dir = plan.join(&list[i].1);
+        let mut child = task(&plan, i)
+            .args(["--checkpoint-minutes", "0.0002"])
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let t0 = Instant::now();
+        while !run_dir.join("checkpoint.bin").exists() {
+            assert!(t0.elapsed() < Duration::from_secs(120), "no checkpoint");
+            assert!(
+                child.try_wait().unwrap().is_none(),
+                "ended before a checkpoint"
+            );
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        std::thread::sleep(Duration::from_millis(300));
+        Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert_eq!(child.wait().unwrap().code(), Some(130), "SIGTERM exits 130");
+        let info = std::fs::read_to_string(run_dir.join("run_info.json")).unwrap();
+        assert!(info.contains("\"status\": \"interrupted\""), "{info}");
+    }
+
+    // collected with one task stopped: its case is measured without it, and it is named
+    let out = verify().arg("collect").arg(&plan).output().unwrap();
+    assert_eq!(out.status.code(), Some(5));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("1 task(s) not finished") && err.contains("equal_doublet/sigma12_0.40"),
+        "{err}"
+    );
+
+    // run again: resumed from its checkpoint
+    let out = task(&plan, stopped).output().unwrap();
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("(resumed)"));
+    // a finished task is skipped: nothing simulated, nothing printed about a run
+    let out = task(&plan, stopped).output().unwrap();
+    assert!(out.status.success());
+    assert!(!String::from_utf8_lossy(&out.stderr).contains(&list[stopped].0));
+
+    let st = verify().arg("collect").arg(&plan).status().unwrap();
+    assert_eq!(st.code(), Some(0));
+    let a = std::fs::read(serial.join("summary.csv")).unwrap();
+    let b = std::fs::read(plan.join("summary.csv")).unwrap();
+    assert!(
+        a == b,
+        "the collected summary.csv differs from the serial one"
+    );
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+const SCENE: &str = r#"
+[discretisation]
+l0 = 1.0e-4
+sound_speed = 12.0
+[time]
+end = 2.0e-4
+output_interval = 1.0e-4
+[effects]
+interfacial_tension = true
+[[liquid]]
+name = "matte"
+density = 4500.0
+viscosity = 3.13e-3
+surface_tension = 0.4
+[[body]]
+name = "drop"
+liquid = "matte"
+shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 8.0e-4 }
+"#;
+
+#[test]
+fn a_sweep_runs_every_combination_and_tabulates_them() {
+    let base = dir("sweep");
+    let scene = base.join("drop.toml");
+    std::fs::write(&scene, SCENE).unwrap();
+    let out = base.join("sweep");
+    let st = verify()
+        .arg("sweep")
+        .arg(&scene)
+        .args(["--set", "liquid.matte.surface_tension=0.3,0.5"])
+        .args(["--set", "time.end=1e-4,2e-4", "--threads", "2"])
+        .arg("--out")
+        .arg(&out)
+        .stderr(Stdio::null())
+        .status()
+        .unwrap();
+    assert_eq!(st.code(), Some(0));
+    let mut rdr = csv::Reader::from_path(out.join("sweep.csv")).unwrap();
+    let h = rdr.headers().unwrap().clone();
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let rows: Vec<csv::StringRecord> = rdr.records().map(|r| r.unwrap()).collect();
+    assert_eq!(rows.len(), 4);
+    let (sigma, end) = (col("liquid.matte.surface_tension"), col("time.end"));
+    let (status, t) = (col("status"), col("simulated_time_s"));
+    assert_eq!((&rows[1][sigma], &rows[1][end]), ("0.3", "0.0002"));
+    for r in &rows {
+        assert_eq!(&r[status], "completed");
+        let want: f64 = r[end].parse().unwrap();
+        let got: f64 = r[t].parse().unwrap();
+        assert!((got - want).abs() < 1e-12, "ran to its own end time");
+    }
+    // the same sweep again: every task finished, nothing run, same table
+    let before = std::fs::read(out.join("sweep.csv")).unwrap();
+    let st = verify()
+        .arg("sweep")
+        .arg(&scene)
+        .args(["--set", "liquid.matte.surface_tension=0.3,0.5"])
+        .args(["--set", "time.end=1e-4,2e-4"])
+        .arg("--out")
+        .arg(&out)
+        .stderr(Stdio::null())
+        .status()
+        .unwrap();
+    assert_eq!(st.code(), Some(0));
+    assert_eq!(before, std::fs::read(out.join("sweep.csv")).unwrap());
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+#[test]
+fn bad_input_to_the_plan_commands_is_named_and_exits_2() {
+    let base = dir("errors");
+    let scene = base.join("drop.toml");
+    std::fs::write(&scene, SCENE).unwrap();
+    let stderr_of = |c: &mut Command| {
+        let o = c.output().unwrap();
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
+    };
+    // a key the scene does not have, found before anything runs
+    let (code, err) = stderr_of(
+        verify()
+            .args(["plan", "sweep"])
+            .arg(&scene)
+            .args(["--set", "liquid.matte.surface_tensio=0.3,0.4", "--out"])
+            .arg(base.join("p")),
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("surface_tensio"), "{err}");
+    // a liquid that is not in the scene names the ones that are
+    let (code, err) = stderr_of(
+        verify()
+            .args(["plan", "sweep"])
+            .arg(&scene)
+            .args(["--set", "liquid.slag.viscosity=0.1", "--out"])
+            .arg(base.join("p")),
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("`matte`"), "{err}");
+    // a missing plan, and an index out of range
+    let (code, err) = stderr_of(
+        verify()
+            .arg("task")
+            .arg(base.join("none"))
+            .args(["--index", "0"]),
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("no plan"), "{err}");
+    let plan = base.join("p");
+    let st = verify()
+        .args(["plan", "sweep"])
+        .arg(&scene)
+        .args(["--set", "time.end=1e-4,2e-4", "--out"])
+        .arg(&plan)
+        .stdout(Stdio::null())
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let (code, err) = stderr_of(verify().arg("task").arg(&plan).args(["--index", "2"]));
+    assert_eq!(code, Some(2));
+    assert!(err.contains("the plan has 2 task(s), 0 to 1"), "{err}");
+    // an unknown case, and another plan in the same folder
+    let (code, err) = stderr_of(
+        verify()
+            .args(["plan", "suite", "no_such_case", "--out"])
+            .arg(base.join("q")),
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("no_such_case"), "{err}");
+    let (code, err) = stderr_of(
+        verify()
+            .args(["plan", "sweep"])
+            .arg(&scene)
+            .args(["--set", "time.end=3e-4", "--out"])
+            .arg(&plan),
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("holds another plan"), "{err}");
+    // nothing collected yet: the tasks are named
+    let (code, err) = stderr_of(verify().arg("collect").arg(&plan));
+    assert_eq!(code, Some(5));
+    assert!(err.contains("2 task(s) not finished"), "{err}");
+    let _ = std::fs::remove_dir_all(&base);
+}

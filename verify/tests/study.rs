@@ -56,5 +56,69 @@ fn reduced_accuracy_cost_study_runs_and_reports() {
     ] {
         assert!(out.join(f).exists(), "{f}");
     }
+    plan_of_the_same_study_collects_the_same_points(&out, &text);
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The study written as a plan into the serial study's folder: its tasks are the serial
+/// runs (found finished, skipped), one point's run deleted is simulated again by its task in
+/// this process, and the collected `points.csv` is the serial one — the re-run point's value
+/// to the bit, the others byte for byte.
+fn plan_of_the_same_study_collects_the_same_points(out: &std::path::Path, serial: &str) {
+    let verify = || std::process::Command::new(env!("CARGO_BIN_EXE_verify"));
+    let st = verify()
+        .args(["plan", "study", "--grid", "reduced", "--out"])
+        .arg(out)
+        .stdout(std::process::Stdio::null())
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let plan: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("plan.json")).unwrap()).unwrap();
+    let tasks = plan["tasks"].as_array().unwrap();
+    // the cube's period and damping share their runs: 20 points, 16 runs
+    assert_eq!(tasks.len(), 16);
+    let redo = "cube_drop/wendland_c2_h1.05_re4.2_sum/n10";
+    let k = tasks
+        .iter()
+        .position(|t| t["label"] == redo)
+        .expect("the default cube point is a task");
+    std::fs::remove_dir_all(out.join(redo)).unwrap();
+    for i in 0..tasks.len() {
+        let st = verify()
+            .arg("task")
+            .arg(out)
+            .args(["--index", &i.to_string(), "--threads", "2"])
+            .stderr(std::process::Stdio::null())
+            .status()
+            .unwrap();
+        assert!(st.success(), "task {i}");
+    }
+    assert!(
+        out.join(redo).join("run_info.json").exists(),
+        "task {k} ran"
+    );
+    let st = verify().arg("collect").arg(out).status().unwrap();
+    assert_eq!(st.code(), Some(0));
+    let collected = std::fs::read_to_string(out.join("points.csv")).unwrap();
+    let (a, b): (Vec<&str>, Vec<&str>) = (serial.lines().collect(), collected.lines().collect());
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        if x.starts_with("cube_")
+            && x.contains("wendland_c2 h1.05 re4.2 sum,")
+            && x.contains(",10,")
+        {
+            // re-run: the same measurement (value, reference, error), another wall time
+            let cols = |r: &str| {
+                r.split(',')
+                    .skip(11)
+                    .take(3)
+                    .map(String::from)
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(cols(x), cols(y), "{x}\n{y}");
+        } else {
+            assert_eq!(x, y);
+        }
+    }
 }

@@ -3,6 +3,7 @@
 
 pub mod checkpoint;
 pub mod error;
+pub mod machine;
 pub mod run_info;
 pub mod timeseries;
 pub mod vtk;

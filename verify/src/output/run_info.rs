@@ -36,6 +36,10 @@ pub struct RunInfo {
     pub git_revision: String,
     /// Worker threads.
     pub threads: usize,
+    /// The machine the run started on: CPU model, logical cores, vector extensions
+    /// ([`super::machine`]; absent in records written before it was kept).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub machine: Option<String>,
     /// Fluid particles.
     pub fluid_particles: usize,
     /// Wall particles.
@@ -92,6 +96,7 @@ impl RunInfo {
             effects: sim.model.effects.names(),
             git_revision: env!("GIT_REVISION").to_string(),
             threads,
+            machine: Some(super::machine::describe()),
             fluid_particles: sim.particles.n_fluid,
             wall_particles: sim.particles.n_wall(),
             tension_scales: if sim.model.tension_scales.iter().all(|&f| f == 1.0) {

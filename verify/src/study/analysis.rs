@@ -127,6 +127,8 @@ mod tests {
             particle_steps_per_second: 1e6,
             mean_neighbours: 30.0,
             peak_memory_bytes: None,
+            machine: None,
+            simulated_time_s: 1e-3,
             status: "completed".into(),
         }
     }

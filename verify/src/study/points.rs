@@ -35,6 +35,12 @@ pub struct PointResult {
     pub mean_neighbours: f64,
     /// Peak resident memory of the run's process [bytes].
     pub peak_memory_bytes: Option<u64>,
+    /// The machine the run started on (CPU model, cores, vector extensions), if recorded.
+    #[serde(default)]
+    pub machine: Option<String>,
+    /// Simulated time of the run [s].
+    #[serde(default)]
+    pub simulated_time_s: f64,
     /// `completed`, `failed: …` or `not measurable: …`.
     pub status: String,
 }
@@ -175,6 +181,8 @@ pub fn measure(point: &Point, dir: &Path) -> anyhow::Result<PointResult> {
         particle_steps_per_second: info.particle_steps_per_second,
         mean_neighbours: info.mean_neighbours,
         peak_memory_bytes: info.peak_memory_bytes,
+        machine: info.machine.clone(),
+        simulated_time_s: info.simulated_time_s,
         status,
     })
 }

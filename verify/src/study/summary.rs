@@ -35,6 +35,7 @@ pub fn write(out: &Path, results: &[PointResult], variants: &[Variant]) -> anyho
         }
     }
     targets_table(&mut md, results, variants);
+    cheapest_table(&mut md, results, variants);
     crate::output::atomic_write(&out.join("summary.md"), md.as_bytes())?;
     Ok(())
 }
@@ -72,15 +73,7 @@ fn targets_table(md: &mut String, results: &[PointResult], variants: &[Variant])
             .iter()
             .map(|&p| {
                 let tol = p.target().map_or(0.0, |t| t.0);
-                let mut mine: Vec<&PointResult> = (results.iter())
-                    .filter(|r| r.point.problem == p && r.point.variant == *v)
-                    .collect();
-                mine.sort_by_key(|r| std::cmp::Reverse(r.point.resolution));
-                // finest first: the last of the unbroken run within the target (NaN misses)
-                mine.iter()
-                    .take_while(|r| r.relative_error.abs() <= tol)
-                    .last()
-                    .copied()
+                coarsest_within(results, p, v, tol)
             })
             .collect();
         let text: Vec<String> = cells
@@ -101,6 +94,115 @@ fn targets_table(md: &mut String, results: &[PointResult], variants: &[Variant])
             "no"
         };
         let _ = writeln!(md, "| {} | {} | {all} |", v.label(), text.join(" | "));
+    }
+    let _ = writeln!(md);
+}
+
+/// The coarsest measured resolution of `variant` on `problem` from which every finer measured
+/// one is within `tol` (relative) too; `None` if the finest misses it (a NaN misses).
+fn coarsest_within<'a>(
+    results: &'a [PointResult],
+    problem: Problem,
+    variant: &Variant,
+    tol: f64,
+) -> Option<&'a PointResult> {
+    let mut mine: Vec<&PointResult> = (results.iter())
+        .filter(|r| r.point.problem == problem && r.point.variant == *variant)
+        .collect();
+    mine.sort_by_key(|r| std::cmp::Reverse(r.point.resolution));
+    // finest first: the last of the unbroken run within the target
+    mine.iter()
+        .take_while(|r| r.relative_error.abs() <= tol)
+        .last()
+        .copied()
+}
+
+/// Target errors a user may ask for, per problem: `(relative tolerance, in words)`.
+fn target_levels(problem: Problem) -> Vec<(f64, String)> {
+    let rel = |pcts: &[f64]| {
+        pcts.iter()
+            .map(|&p| (p / 100.0, format!("{p} %")))
+            .collect::<Vec<_>>()
+    };
+    let deg = |at: f64, ds: &[f64]| {
+        ds.iter()
+            .map(|&d| (d / at, format!("±{d}°")))
+            .collect::<Vec<_>>()
+    };
+    match problem {
+        Problem::CubeDrop | Problem::SessileDrop => rel(&[1.0, 3.0, 10.0]),
+        Problem::CubeDamping => rel(&[30.0, 100.0]),
+        Problem::ContactAngle30 => deg(30.0, &[2.0, 4.0, 8.0]),
+        Problem::ContactAngle60 => deg(60.0, &[2.0, 5.0, 10.0]),
+    }
+}
+
+/// For each problem and target error, the cheapest setting (over variants, in wall time) whose
+/// resolution and every finer one measured meet it, and what it costs: per particle-step, and
+/// per simulated millisecond per thousand particles (to scale to a user's scene of another
+/// size at the same resolution).
+fn cheapest_table(md: &mut String, results: &[PointResult], variants: &[Variant]) {
+    let _ = writeln!(
+        md,
+        "## The cheapest setting for a target error
+"
+    );
+    let mut machines: Vec<String> = results.iter().filter_map(|r| r.machine.clone()).collect();
+    machines.sort();
+    machines.dedup();
+    let _ = writeln!(
+        md,
+        "Over every variant and resolution measured: the cheapest (wall time) whose resolution \
+         and every finer one measured meet the target. Costs on {} (2 threads; they scale with \
+         the machine, the ratios between settings much less).\n",
+        if machines.is_empty() {
+            "a machine not recorded".to_string()
+        } else {
+            machines.join("; ")
+        }
+    );
+    let _ = writeln!(
+        md,
+        "| quantity | target | setting | resolution | error | particles | wall time [s] | µs per particle-step | s per simulated ms per 1000 particles |"
+    );
+    let _ = writeln!(md, "|---|---|---|---|---|---|---|---|---|");
+    for p in Problem::ALL {
+        for (tol, words) in target_levels(p) {
+            let best = variants
+                .iter()
+                .filter_map(|v| coarsest_within(results, p, v, tol))
+                .min_by(|a, b| a.wall_time_s.total_cmp(&b.wall_time_s));
+            match best {
+                Some(r) => {
+                    let per_ms = r.wall_time_s / (r.simulated_time_s * 1e3).max(f64::MIN_POSITIVE);
+                    // an angle's error in degrees, as its target
+                    let error = match p {
+                        Problem::ContactAngle30 | Problem::ContactAngle60 => {
+                            format!("{:+.1}°", r.value - r.reference)
+                        }
+                        _ => format!("{:+.1} %", 100.0 * r.relative_error),
+                    };
+                    let _ = writeln!(
+                        md,
+                        "| {} | {words} | {} | {} | {error} | {} | {:.1} | {:.2} | {:.3} |",
+                        p.name(),
+                        r.point.variant.label(),
+                        r.point.resolution,
+                        r.particles,
+                        r.wall_time_s,
+                        1e6 / r.particle_steps_per_second,
+                        per_ms * 1000.0 / r.particles.max(1) as f64
+                    );
+                }
+                None => {
+                    let _ = writeln!(
+                        md,
+                        "| {} | {words} | none measured meets it | | | | | | |",
+                        p.name()
+                    );
+                }
+            }
+        }
     }
     let _ = writeln!(md);
 }

@@ -648,6 +648,7 @@ fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
     let before = verify::output::run_info::peak_memory_bytes();
     let mut sim = solver::Simulation::new(scene)?;
     let n = sim.particles.n_fluid;
+    println!("machine: {}", verify::output::machine::describe());
     println!(
         "particles: {n} fluid, {} wall; {} threads",
         sim.particles.n_wall(),

@@ -1,8 +1,9 @@
 //! The `run` and `check` commands: outputs, run record, pre-flight findings, refusal to overwrite,
 //! and exit codes.
 
+mod common;
+
 use std::path::PathBuf;
-use std::process::Command;
 
 fn scene_file(dir: &std::path::Path, text: &str) -> PathBuf {
     std::fs::create_dir_all(dir).unwrap();
@@ -17,31 +18,7 @@ fn tmp(name: &str) -> PathBuf {
     d
 }
 
-const SMALL: &str = r#"
-description = "a small matte drop relaxing"
-[discretisation]
-l0 = 1.0e-4
-sound_speed = 12.0
-[time]
-end = 2.0e-5
-output_interval = 1.0e-5
-[effects]
-interfacial_tension = true
-laminar_viscosity = true
-[[liquid]]
-name = "matte"
-density = 4500.0
-viscosity = 3.13e-3
-surface_tension = 0.4
-[[body]]
-name = "drop"
-liquid = "matte"
-shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 4.0e-4 }
-"#;
-
-fn verify() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_verify"))
-}
+use common::{verify, SMALL};
 
 #[test]
 fn run_writes_timeseries_run_info_and_snapshots() {

@@ -3,6 +3,8 @@
 //! limit) and run again, collect to a `summary.csv` byte-identical to `verify all`'s. Bad input
 //! to the plan commands is refused with exit 2 and a message that names it.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -14,9 +16,7 @@ fn dir(name: &str) -> PathBuf {
     d
 }
 
-fn verify() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_verify"))
-}
+use common::{verify, SMALL};
 
 /// The tasks' labels and folders of the plan in `plan`.
 fn tasks(plan: &Path) -> Vec<(String, String)> {
@@ -46,6 +46,31 @@ fn shuffled(n: usize) -> Vec<usize> {
         v.swap(i, (x >> 33) as usize % (i + 1));
     }
     v
+}
+
+/// `verify plan sweep SMALL --set S … --out OUT` (`plan`) or `verify sweep …` (the same, run).
+fn sweep(scene: &Path, sets: &[&str], out: &Path, plan: bool) -> Command {
+    let mut c = verify();
+    if plan {
+        c.args(["plan", "sweep"]);
+    } else {
+        c.arg("sweep");
+    }
+    c.arg(scene);
+    for s in sets {
+        c.args(["--set", s]);
+    }
+    c.arg("--out").arg(out).stdout(Stdio::null());
+    c
+}
+
+/// The exit code and stderr of `c`.
+fn stderr_of(c: &mut Command) -> (Option<i32>, String) {
+    let o = c.output().unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).to_string(),
+    )
 }
 
 fn task(plan: &Path, index: usize) -> Command {
@@ -147,39 +172,15 @@ fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_s
     let _ = std::fs::remove_dir_all(&base);
 }
 
-const SCENE: &str = r#"
-[discretisation]
-l0 = 1.0e-4
-sound_speed = 12.0
-[time]
-end = 2.0e-4
-output_interval = 1.0e-4
-[effects]
-interfacial_tension = true
-[[liquid]]
-name = "matte"
-density = 4500.0
-viscosity = 3.13e-3
-surface_tension = 0.4
-[[body]]
-name = "drop"
-liquid = "matte"
-shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 8.0e-4 }
-"#;
-
 #[test]
 fn a_sweep_runs_every_combination_and_tabulates_them() {
     let base = dir("sweep");
     let scene = base.join("drop.toml");
-    std::fs::write(&scene, SCENE).unwrap();
+    std::fs::write(&scene, SMALL).unwrap();
     let out = base.join("sweep");
-    let st = verify()
-        .arg("sweep")
-        .arg(&scene)
-        .args(["--set", "liquid.matte.surface_tension=0.3,0.5"])
-        .args(["--set", "time.end=1e-4,2e-4", "--threads", "2"])
-        .arg("--out")
-        .arg(&out)
+    let sets = ["liquid.matte.surface_tension=0.3,0.5", "time.end=1e-4,2e-4"];
+    let st = sweep(&scene, &sets, &out, false)
+        .args(["--threads", "2"])
         .stderr(Stdio::null())
         .status()
         .unwrap();
@@ -200,13 +201,7 @@ fn a_sweep_runs_every_combination_and_tabulates_them() {
     }
     // the same sweep again: every task finished, nothing run, same table
     let before = std::fs::read(out.join("sweep.csv")).unwrap();
-    let st = verify()
-        .arg("sweep")
-        .arg(&scene)
-        .args(["--set", "liquid.matte.surface_tension=0.3,0.5"])
-        .args(["--set", "time.end=1e-4,2e-4"])
-        .arg("--out")
-        .arg(&out)
+    let st = sweep(&scene, &sets, &out, false)
         .stderr(Stdio::null())
         .status()
         .unwrap();
@@ -219,32 +214,19 @@ fn a_sweep_runs_every_combination_and_tabulates_them() {
 fn bad_input_to_the_plan_commands_is_named_and_exits_2() {
     let base = dir("errors");
     let scene = base.join("drop.toml");
-    std::fs::write(&scene, SCENE).unwrap();
-    let stderr_of = |c: &mut Command| {
-        let o = c.output().unwrap();
-        (
-            o.status.code(),
-            String::from_utf8_lossy(&o.stderr).to_string(),
-        )
-    };
+    std::fs::write(&scene, SMALL).unwrap();
     // a key the scene does not have, found before anything runs
-    let (code, err) = stderr_of(
-        verify()
-            .args(["plan", "sweep"])
-            .arg(&scene)
-            .args(["--set", "liquid.matte.surface_tensio=0.3,0.4", "--out"])
-            .arg(base.join("p")),
-    );
+    let p = base.join("p");
+    let (code, err) = stderr_of(&mut sweep(
+        &scene,
+        &["liquid.matte.surface_tensio=0.3,0.4"],
+        &p,
+        true,
+    ));
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("surface_tensio"), "{err}");
     // a liquid that is not in the scene names the ones that are
-    let (code, err) = stderr_of(
-        verify()
-            .args(["plan", "sweep"])
-            .arg(&scene)
-            .args(["--set", "liquid.slag.viscosity=0.1", "--out"])
-            .arg(base.join("p")),
-    );
+    let (code, err) = stderr_of(&mut sweep(&scene, &["liquid.slag.viscosity=0.1"], &p, true));
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("`matte`"), "{err}");
     // a missing plan, and an index out of range
@@ -256,16 +238,9 @@ fn bad_input_to_the_plan_commands_is_named_and_exits_2() {
     );
     assert_eq!(code, Some(2));
     assert!(err.contains("no plan"), "{err}");
-    let plan = base.join("p");
-    let st = verify()
-        .args(["plan", "sweep"])
-        .arg(&scene)
-        .args(["--set", "time.end=1e-4,2e-4", "--out"])
-        .arg(&plan)
-        .stdout(Stdio::null())
-        .status()
-        .unwrap();
-    assert!(st.success());
+    let plan = p;
+    let mut st = sweep(&scene, &["time.end=1e-4,2e-4"], &plan, true);
+    assert!(st.status().unwrap().success());
     let (code, err) = stderr_of(verify().arg("task").arg(&plan).args(["--index", "2"]));
     assert_eq!(code, Some(2));
     assert!(err.contains("the plan has 2 task(s), 0 to 1"), "{err}");
@@ -277,13 +252,7 @@ fn bad_input_to_the_plan_commands_is_named_and_exits_2() {
     );
     assert_eq!(code, Some(2));
     assert!(err.contains("no_such_case"), "{err}");
-    let (code, err) = stderr_of(
-        verify()
-            .args(["plan", "sweep"])
-            .arg(&scene)
-            .args(["--set", "time.end=3e-4", "--out"])
-            .arg(&plan),
-    );
+    let (code, err) = stderr_of(&mut sweep(&scene, &["time.end=3e-4"], &plan, true));
     assert_eq!(code, Some(2));
     assert!(err.contains("holds another plan"), "{err}");
     // nothing collected yet: the tasks are named

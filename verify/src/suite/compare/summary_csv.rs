@@ -30,10 +30,8 @@ fn opt(v: Option<f64>) -> String {
 
 /// Writes metrics as CSV.
 pub fn write(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(COLUMNS)?;
-    for m in metrics {
-        w.write_record([
+    write_rows(path, &COLUMNS, metrics, |m| {
+        vec![
             m.case.clone(),
             m.name.clone(),
             m.unit.clone(),
@@ -51,23 +49,32 @@ pub fn write(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
                 .unwrap_or_default(),
             m.particles.to_string(),
             m.note.clone(),
-        ])?;
-    }
-    atomic_write(path, &w.into_inner()?)?;
-    Ok(())
+        ]
+    })
 }
 
 /// Writes what each metric's run cost: wall time [s] of its time loop, particles.
 pub fn write_costs(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(COST_COLUMNS)?;
-    for m in metrics {
-        w.write_record([
+    write_rows(path, &COST_COLUMNS, metrics, |m| {
+        vec![
             m.case.clone(),
             m.name.clone(),
             m.particles.to_string(),
             format!("{:.1}", m.wall_time_s),
-        ])?;
+        ]
+    })
+}
+
+fn write_rows(
+    path: &Path,
+    columns: &[&str],
+    metrics: &[Metric],
+    row: impl Fn(&Metric) -> Vec<String>,
+) -> anyhow::Result<()> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(columns)?;
+    for m in metrics {
+        w.write_record(row(m))?;
     }
     atomic_write(path, &w.into_inner()?)?;
     Ok(())

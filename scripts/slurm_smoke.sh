@@ -11,7 +11,7 @@ if [ "$#" -ge 1 ]; then
   verify=$(realpath "$1")
 else
   cargo build -q -p verify
-  verify=$(realpath target/debug/verify)
+  verify=$(realpath "${CARGO_TARGET_DIR:-target}/debug/verify")
 fi
 
 if ! command -v slurmctld >/dev/null || ! command -v munged >/dev/null; then

@@ -3,8 +3,11 @@
 //! One search serves both interaction radii: the kernel support (pressure, viscosity, density)
 //! and the potential cut-off `r_e` (interfacial tension), which may be larger. Each particle's
 //! list holds its *near* neighbours (within support + skin) first, then its *far* ones (within
-//! `max(support, r_e)` + skin): kernel loops stop at the end of the near part, the
-//! potential loop runs on. Lists are rebuilt when a particle has moved half the skin.
+//! `max(support, r_e)` + skin) of higher index only — every far pair once, in the list of its
+//! lower index (walls, indexed after the fluid, are in every fluid particle's far part): kernel
+//! loops gather over the near part, the potential evaluates the far pairs once and adds each to
+//! both particles ([`crate::physics::surface_tension::far_pair_forces`]). Lists are rebuilt when
+//! a particle has moved half the skin.
 //!
 //! Cells are cubes of half the far radius (plus skin) keyed by their integer coordinates on a
 //! fixed global grid (x fastest), so the five cells of a row are consecutive keys and the
@@ -48,12 +51,14 @@ impl NeighbourLists {
     pub fn near(&self, i: usize) -> &[u32] {
         self.slice(i, 1, 2)
     }
-    /// All neighbours of `i` (within the far radius + skin), near ones first.
+    /// The near neighbours of `i`, then its far ones of higher index (each far pair is in
+    /// one list only: [`NeighbourLists::far`]).
     #[inline(always)]
     pub fn all(&self, i: usize) -> &[u32] {
         self.slice(i, 1, 3)
     }
-    /// Far-only neighbours of `i`.
+    /// The far neighbours `j > i` of `i` (beyond support + skin, within the far radius + skin):
+    /// each far pair once, in the list of its lower index.
     #[inline(always)]
     pub fn far(&self, i: usize) -> &[u32] {
         self.slice(i, 2, 3)
@@ -399,7 +404,8 @@ fn scan<const FAR: bool>(
         near_buf[nn] = j as u32;
         nn += usize::from(is_near);
         if FAR {
-            let is_far = (d2 < far2) & (j != i) & !is_near;
+            // far pairs once: in the list of the lower index (walls come after the fluid)
+            let is_far = (d2 < far2) & (j > i) & !is_near;
             far_buf[nf] = j as u32;
             nf += usize::from(is_far);
         }

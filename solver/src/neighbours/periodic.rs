@@ -4,7 +4,8 @@
 //! Periodic scenes are small verification boxes (a shear wave, a slab), so this build favours
 //! plainness over the open search's tuning: full-size cells, 27 of them per particle, found
 //! through a counting sort. The lists it writes have the open search's layout (near entries
-//! first, then far; fluid candidates before wall candidates) and an order fixed by the
+//! first, then far — each far pair once, in the lower index's list; fluid candidates before
+//! wall candidates) and an order fixed by the
 //! particle order alone, so results do not depend on the number of threads.
 
 use super::NeighbourSearch;
@@ -174,7 +175,8 @@ impl NeighbourSearch {
                         let d2 = pbc.delta(pos[i], pos[j]).norm_squared();
                         if d2 < near2 {
                             near.push(j as u32);
-                        } else if d2 < far2_i {
+                        } else if d2 < far2_i && j > i {
+                            // far pairs once: in the list of the lower index
                             far.push(j as u32);
                         }
                     };

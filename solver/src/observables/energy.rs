@@ -32,11 +32,18 @@ pub fn interfacial_energy(model: &Model, p: &Particles, lists: &NeighbourLists) 
     for i in 0..p.n_fluid {
         let a = p.phase[i] as usize;
         let mut ei = 0.5 * model.pairs.c(a, a) * model.bulk_potential_sum_m3;
-        for &j in lists.all(i) {
+        // a near pair of two liquid particles is in both lists (half of it here), a far pair
+        // in one (all of it), a wall pair in the liquid particle's only
+        let n_near = lists.near(i).len();
+        for (k, &j) in lists.all(i).iter().enumerate() {
             let j = j as usize;
             let r = lists.delta(p.pos[i], p.pos[j]).norm();
             let c = model.pairs.c(a, p.phase[j] as usize);
-            let share = if j < p.n_fluid { 0.5 } else { 1.0 };
+            let share = if j < p.n_fluid && k < n_near {
+                0.5
+            } else {
+                1.0
+            };
             ei -= share * c * pot.p(r);
         }
         e += ei;

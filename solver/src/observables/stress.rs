@@ -26,19 +26,19 @@ pub fn particle_virials<K: Kernel>(
     let support2 = model.support_m * model.support_m;
     let r_e2 = model.r_e_m * model.r_e_m;
     let tension = model.effects.interfacial_tension;
-    let mut out = Vec::with_capacity(p.n_fluid);
+    let mut out = vec![[0.0; 9]; p.n_fluid];
     for i in 0..p.n_fluid {
-        let mut w = [0.0; 9];
         let a = p.phase[i] as usize;
         let m = model.mass[a];
         let v = p.vel[i];
         let pv_i = p.pressure[i] * p.vol[i] * p.vol[i];
         for r in 0..3 {
             for c in 0..3 {
-                w[3 * r + c] += m * v[r] * v[c];
+                out[i][3 * r + c] += m * v[r] * v[c];
             }
         }
-        for &j in lists.all(i) {
+        let n_near = lists.near(i).len();
+        for (k, &j) in lists.all(i).iter().enumerate() {
             let j = j as usize;
             if j >= p.n_fluid {
                 continue;
@@ -59,14 +59,18 @@ pub fn particle_virials<K: Kernel>(
                 let pv_j = p.pressure[j] * p.vol[j] * p.vol[j];
                 f -= (pv_i + pv_j) * kernel.dw_dr(r) / r; // Eq. (11), Natsui 2021
             }
-            // each pair appears in both particles' lists: half of it here
+            // half of the pair to each particle: a near pair is in both lists (its half to i
+            // here), a far pair in i's only (a half to each here)
             for r in 0..3 {
                 for c in 0..3 {
-                    w[3 * r + c] += 0.5 * d[r] * d[c] * f;
+                    let half = 0.5 * d[r] * d[c] * f;
+                    out[i][3 * r + c] += half;
+                    if k >= n_near {
+                        out[j][3 * r + c] += half;
+                    }
                 }
             }
         }
-        out.push(w);
     }
     out
 }

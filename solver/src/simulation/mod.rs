@@ -250,11 +250,21 @@ impl Simulation {
         let total: usize = (0..p.n_fluid)
             .into_par_iter()
             .map(|i| {
+                let n_near = lists.near(i).len();
+                // a far pair of two liquid particles is listed once and counts for both
                 lists
                     .all(i)
                     .iter()
-                    .filter(|&&j| lists.delta(p.pos[i], p.pos[j as usize]).norm_squared() < r2)
-                    .count()
+                    .enumerate()
+                    .filter(|&(_, &j)| lists.delta(p.pos[i], p.pos[j as usize]).norm_squared() < r2)
+                    .map(|(k, &j)| {
+                        if k >= n_near && (j as usize) < p.n_fluid {
+                            2
+                        } else {
+                            1
+                        }
+                    })
+                    .sum::<usize>()
             })
             .sum();
         total as f64 / p.n_fluid.max(1) as f64

@@ -36,8 +36,8 @@ impl<T: PairTerm> PairTerm for Unbooked<T> {
         self.0.pair(s, own, l, n, k)
     }
     #[inline(always)]
-    fn far(&self, own: &T::Own, f: &mut Vec3, pi: Vec3, far: &[u32]) {
-        self.0.far(own, f, pi, far)
+    fn far_forces(&self, lists: &solver::neighbours::NeighbourLists, out: &mut [Vec3]) {
+        self.0.far_forces(lists, out)
     }
 }
 

@@ -10,6 +10,7 @@ mod effects;
 mod energy_booking;
 mod energy_budget;
 mod failures;
+mod far_pairs;
 mod fuzz_scenes;
 mod lattice_energy;
 mod periodic;

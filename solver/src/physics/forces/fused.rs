@@ -64,6 +64,11 @@ pub fn fluid_forces<K: Kernel, T: PairTerm>(
         visit: [0u32; ACTIVE_BITS],
         booked: Booked::new(),
     };
+    // the far pairs first, each once, into `acc` (read back by each particle below)
+    if T::FAR {
+        acc.fill(Vec3::zeros());
+        terms.far_forces(inp.lists, acc);
+    }
     // a scene without walls skips their bookings (a test per particle)
     let walls = const { ledger::any_walls(T::BOOKINGS) } && inp.state.pos.len() > inp.state.n_fluid;
     let blocks: Vec<Power> = if T::RATE {
@@ -74,7 +79,7 @@ pub fn fluid_forces<K: Kernel, T: PairTerm>(
             .map_init(scratch, |s, (b, (ab, db))| {
                 let mut sum = Power::default();
                 for (k, (a, d)) in ab.iter_mut().zip(db.iter_mut()).enumerate() {
-                    let out = particle(inp, terms, s, b * BLOCK + k, walls);
+                    let out = particle(inp, terms, s, b * BLOCK + k, walls, *a);
                     (*a, *d) = (out.acc, out.rate);
                     add_booked::<T>(&mut sum, &out.power);
                 }
@@ -87,7 +92,7 @@ pub fn fluid_forces<K: Kernel, T: PairTerm>(
             .map_init(scratch, |s, (b, ab)| {
                 let mut sum = Power::default();
                 for (k, a) in ab.iter_mut().enumerate() {
-                    let out = particle(inp, terms, s, b * BLOCK + k, walls);
+                    let out = particle(inp, terms, s, b * BLOCK + k, walls, *a);
                     *a = out.acc;
                     add_booked::<T>(&mut sum, &out.power);
                 }
@@ -121,7 +126,8 @@ struct ParticleOut {
 }
 
 /// The acceleration [m/s²], density rate [kg/(m³ s)] and booked power of fluid particle `i`;
-/// `walls`: some term books wall pairs and the scene has walls.
+/// `walls`: some term books wall pairs and the scene has walls; `far`: the force [N] of its
+/// far pairs (zero without a far term).
 #[inline(always)]
 fn particle<K: Kernel, T: PairTerm>(
     inp: &LoopInput<K>,
@@ -129,6 +135,7 @@ fn particle<K: Kernel, T: PairTerm>(
     s: &mut Scratch<T::Lanes>,
     i: usize,
     walls: bool,
+    far: Vec3,
 ) -> ParticleOut {
     let st = &inp.state;
     let k = inp.kernel;
@@ -206,7 +213,7 @@ fn particle<K: Kernel, T: PairTerm>(
         s.booked.add_liquid::<T>(rel, &cl, chunk.len());
     }
     if T::FAR {
-        terms.far(&own, &mut f, pi, inp.lists.far(i));
+        f += far;
     }
     let acc = f / st.mass[me.phase] + inp.gravity;
     ParticleOut {

@@ -24,6 +24,7 @@ pub mod continuity;
 pub mod fused;
 pub mod laminar_viscosity;
 pub mod ledger;
+pub mod pairs_once;
 pub mod pressure;
 pub mod term;
 pub mod wall_repulsion;

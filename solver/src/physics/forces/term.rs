@@ -18,6 +18,7 @@
 //! every line of it compiles away.
 
 use super::ledger::{self, Booking, Bookings, Ledger};
+use crate::neighbours::NeighbourLists;
 use crate::state::Vec3;
 
 /// Neighbours processed together by the pair loop (measured, per step of the 20 k cube at
@@ -158,10 +159,10 @@ pub trait PairTerm: Sync {
     ) {
     }
 
-    /// Adds the force [N] of the far neighbours `far` (beyond the support) of the particle at
-    /// `pi` [m] to `f`.
+    /// Adds to `out` (one per fluid particle) the forces [N] of the pairs beyond the kernel
+    /// support — the lists' far parts, each pair once ([`super::pairs_once`]).
     #[inline(always)]
-    fn far(&self, _own: &Self::Own, _f: &mut Vec3, _pi: Vec3, _far: &[u32]) {}
+    fn far_forces(&self, _lists: &NeighbourLists, _out: &mut [Vec3]) {}
 }
 
 /// The absent term: contributes nothing and compiles to nothing.
@@ -227,12 +228,12 @@ impl<A: PairTerm, B: PairTerm> PairTerm for (A, B) {
         }
     }
     #[inline(always)]
-    fn far(&self, own: &Self::Own, f: &mut Vec3, pi: Vec3, far: &[u32]) {
+    fn far_forces(&self, lists: &NeighbourLists, out: &mut [Vec3]) {
         if A::ON && A::FAR {
-            self.0.far(&own.0, f, pi, far);
+            self.0.far_forces(lists, out);
         }
         if B::ON && B::FAR {
-            self.1.far(&own.1, f, pi, far);
+            self.1.far_forces(lists, out);
         }
     }
 }

@@ -3,13 +3,14 @@
 //! wall pair's `C` sets the wetting).
 //!
 //! Within the kernel support the pair is one lane of the loop's chunk; beyond it (the lists'
-//! far part, when `r_e` exceeds the support) the term runs its own chunked loop
-//! ([`PairTerm::far`]): the per-pair factors are computed branch-free over a chunk (the
-//! compiler vectorises it; `sqrt` and division are exact IEEE operations), then added one by
-//! one in list order — the same operations in the same order as a scalar loop, hence the same
-//! bits.
+//! far part, when `r_e` exceeds the support) each pair is evaluated once and added to both
+//! particles ([`far_pair_forces`]): the per-pair factors are computed branch-free over a chunk
+//! of the far list (the compiler vectorises it; `sqrt` and division are exact IEEE operations),
+//! then added one by one in list order, `F_ij` to `i` and `−F_ij` to `j`.
 
 use super::potential::Kondo2007Potential;
+use crate::neighbours::NeighbourLists;
+use crate::physics::forces::pairs_once::each_pair_once;
 use crate::physics::forces::term::{
     Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK,
 };
@@ -71,36 +72,49 @@ impl<'a> PairTerm for PairwisePotential<'a> {
         let v = self.potential.pair_force_inside(l.c[n], k.r) * k.ir;
         s.central += if k.apart && k.r2 < r_e * r_e { v } else { 0.0 };
     }
-    #[inline(always)]
-    fn far(&self, row: &&'a [f64], f: &mut Vec3, pi: Vec3, far: &[u32]) {
-        let r_e = self.potential.r_e_m;
-        let re2 = r_e * r_e;
-        for chunk in far.chunks(CHUNK) {
+    fn far_forces(&self, lists: &NeighbourLists, out: &mut [Vec3]) {
+        far_pair_forces(self, lists, out);
+    }
+}
+
+/// Adds to `out` (one per fluid particle) the potential's forces [N] of the far pairs (beyond
+/// the kernel support, within `r_e`), each pair evaluated once: `C_ij P'(r) e_ij` on `i`, its
+/// negative on `j` (`C_ij = C_ji`); a wall neighbour takes nothing. Eq. (15), Natsui 2021.
+pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &mut [Vec3]) {
+    let re2 = term.potential.r_e_m * term.potential.r_e_m;
+    each_pair_once(out, |i, reactions| {
+        let pi = term.pos[i];
+        let a = term.phase[i] as usize;
+        let row = &term.coeff[a * term.n_phases..(a + 1) * term.n_phases];
+        let mut f = Vec3::zeros();
+        for chunk in lists.far(i).chunks(CHUNK) {
             let (mut dx, mut dy, mut dz, mut c) =
                 ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for (k, &j) in chunk.iter().enumerate() {
                 let j = j as usize;
-                let d = pi - self.pos[j];
+                let d = pi - term.pos[j];
                 dx[k] = d.x;
                 dy[k] = d.y;
                 dz[k] = d.z;
-                c[k] = row[self.phase[j] as usize];
+                c[k] = row[term.phase[j] as usize];
             }
             let m = chunk.len();
-            self.periodic
+            term.periodic
                 .image_lanes(&mut dx[..m], &mut dy[..m], &mut dz[..m]);
             let mut s = [0.0; CHUNK];
             for k in 0..CHUNK {
                 let r2 = dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k];
                 let r = r2.sqrt();
-                let v = self.potential.pair_force_inside(c[k], r) / r;
+                // C_ij P'(r) / r: the force along x_ij per metre of x_ij [N/m]
+                let v = term.potential.pair_force_inside(c[k], r) / r; // Eq. (15), Natsui 2021
                 s[k] = if r2 < re2 && r2 > 0.0 { v } else { 0.0 };
             }
-            for k in 0..chunk.len() {
-                f.x += dx[k] * s[k];
-                f.y += dy[k] * s[k];
-                f.z += dz[k] * s[k];
+            for (k, &j) in chunk.iter().enumerate() {
+                let fij = Vec3::new(dx[k] * s[k], dy[k] * s[k], dz[k] * s[k]);
+                f += fij;
+                reactions.subtract(j as usize, fij);
             }
         }
-    }
+        f
+    });
 }

@@ -10,6 +10,6 @@ pub mod force;
 pub mod fowkes;
 pub mod potential;
 
-pub use force::PairwisePotential;
+pub use force::{far_pair_forces, PairwisePotential};
 pub use fowkes::PairTable;
 pub use potential::Kondo2007Potential;

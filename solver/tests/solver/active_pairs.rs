@@ -4,7 +4,7 @@
 //! of a zero), for each way the kernel support and `r_e` can compare, with walls, and for lists
 //! longer than the 64 entries a mask covers.
 
-use super::common::{advance, block_scene, sim};
+use super::common::{advance, block_scene, sim, ALUMINA_PLATE};
 use solver::kernel::WendlandC2;
 use solver::state::Vec3;
 use solver::Simulation;
@@ -19,20 +19,11 @@ fn accelerations(s: &Simulation, active: Vec<u64>) -> Vec<Vec3> {
 }
 
 fn check(discretisation: &str, with_plate: bool, skips: bool) {
-    let plate = r#"
-[[solid]]
-name = "alumina"
-contact_angles = { matte = 60.0 }
-[[wall]]
-name = "plate"
-solid = "alumina"
-shape = { kind = "disk", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }
-"#;
     let text = block_scene(
         10,
         1e-4,
         "interfacial_tension = true\nlaminar_viscosity = true\nartificial_viscosity = {}\ngravity = [0.0, 0.0, -9.81]",
-        if with_plate { plate } else { "" },
+        if with_plate { ALUMINA_PLATE } else { "" },
     )
     .replace("sound_speed = 12.0", &format!("sound_speed = 12.0\n{discretisation}"));
     let mut s = sim(&text);

@@ -1,7 +1,7 @@
 //! One thread and two threads give bitwise identical particle states: every parallel loop
 //! gathers per particle in a fixed neighbour order, and reductions are maxima.
 
-use super::common::block_scene;
+use super::common::{block_scene, ALUMINA_PLATE};
 use solver::{Scene, Simulation};
 
 fn run_with_threads(text: &str, threads: usize, steps: usize) -> solver::state::Particles {
@@ -32,18 +32,8 @@ fn one_and_two_threads_give_identical_bits() {
         10,
         1e-4,
         "interfacial_tension = true\nlaminar_viscosity = true\nartificial_viscosity = {}\ngravity = [0.0, 0.0, -9.81]",
-        r#"
-[[solid]]
-name = "plate"
-contact_angles = { matte = 60.0 }
-[[wall]]
-name = "plate"
-solid = "plate"
-shape = { kind = "disk", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }
-"#,
-    )
-    .replace("name = \"plate\"\ncontact", "name = \"alumina\"\ncontact")
-    .replace("solid = \"plate\"", "solid = \"alumina\"");
+        ALUMINA_PLATE,
+    );
     let a = run_with_threads(&text, 1, 200);
     let b = run_with_threads(&text, 2, 200);
     assert_eq!(a.id, b.id, "same particle order");

@@ -4,7 +4,7 @@
 //! rounding of a sum taken in another order — with walls, several liquids' worth of pairs
 //! across the pass's chunks, and for any thread count bitwise the same.
 
-use super::common::{advance, block_scene, sim};
+use super::common::{advance, block_scene, sim, ALUMINA_PLATE};
 use solver::physics::forces::{fluid_forces, Off};
 use solver::state::Vec3;
 use solver::Simulation;
@@ -19,21 +19,12 @@ fn by_the_loop(s: &Simulation) -> Vec<Vec3> {
 
 #[test]
 fn far_pairs_once_give_the_direct_sum() {
-    let plate = r#"
-[[solid]]
-name = "alumina"
-contact_angles = { matte = 60.0 }
-[[wall]]
-name = "plate"
-solid = "alumina"
-shape = { kind = "disk", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }
-"#;
     // 12³ = 1728 particles: two chunks of the pass (1024 each), pairs across them
     let text = block_scene(
         12,
         1e-4,
         "interfacial_tension = true\ngravity = [0.0, 0.0, -9.81]",
-        plate,
+        ALUMINA_PLATE,
     )
     .replace(
         "sound_speed = 12.0",

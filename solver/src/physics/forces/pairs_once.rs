@@ -126,15 +126,17 @@ mod tests {
 
     #[test]
     fn the_same_bits_for_any_thread_count_and_the_gather_sums() {
-        // several chunks and waves (1024 per chunk, 32 chunks per wave), pairs across chunk
-        // and wave boundaries
+        // 70,000 particles: chunks of 2187 (n/32), 33 of them, so two waves (32 chunks each);
+        // pairs across chunk and wave boundaries
         let (n, reach) = (70_000, 3000);
+        assert_eq!((chunk_len(n), n.div_ceil(chunk_len(n))), (2187, 33));
         let one = run(n, reach, 1);
         for threads in [2, 3, 5] {
             assert!(one == run(n, reach, threads), "{threads} threads");
         }
         // against the gather over both sides: the same up to rounding of the summation order
-        for i in [0usize, 1023, 1024, 33_000, 69_999] {
+        // the first particle, either side of a chunk boundary, either side of the wave boundary
+        for i in [0usize, 2186, 2187, 69_983, 69_984, 69_999] {
             let mut g = Vec3::zeros();
             for j in i.saturating_sub(reach)..(i + reach + 1).min(n + 3) {
                 if j < i {

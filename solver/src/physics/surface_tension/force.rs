@@ -84,8 +84,10 @@ pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &m
     let re2 = term.potential.r_e_m * term.potential.r_e_m;
     each_pair_once(out, |i, reactions| {
         let pi = term.pos[i];
-        let a = term.phase[i] as usize;
-        let row = &term.coeff[a * term.n_phases..(a + 1) * term.n_phases];
+        let row = term.own(Particle {
+            i,
+            phase: term.phase[i] as usize,
+        });
         let mut f = Vec3::zeros();
         for chunk in lists.far(i).chunks(CHUNK) {
             let (mut dx, mut dy, mut dz, mut c) =

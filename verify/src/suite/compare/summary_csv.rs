@@ -65,6 +65,7 @@ pub fn write_costs(path: &Path, metrics: &[Metric]) -> anyhow::Result<()> {
     })
 }
 
+/// Writes `columns`, then one row per metric, to `path` (synced, then renamed).
 fn write_rows(
     path: &Path,
     columns: &[&str],

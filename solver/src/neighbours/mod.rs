@@ -7,7 +7,8 @@
 //! lower index (walls, indexed after the fluid, are in every fluid particle's far part): kernel
 //! loops gather over the near part, the potential evaluates the far pairs once and adds each to
 //! both particles ([`crate::physics::surface_tension::far_pair_forces`]). Lists are rebuilt when
-//! a particle has moved half the skin.
+//! a particle has moved half the skin. Entries are stored as 16-bit differences ([`ids`]): a
+//! list is read in order, through the iterator [`Ids`].
 //!
 //! Cells are cubes of half the far radius (plus skin) keyed by their integer coordinates on a
 //! fixed global grid (x fastest), so the five cells of a row are consecutive keys and the
@@ -17,13 +18,17 @@
 //! particle order and positions, so results do not depend on the number of threads.
 
 mod cells;
+mod clip;
+mod ids;
 mod periodic;
 mod table;
 
 pub use cells::{cell_key, CellKeyError};
+pub use ids::Ids;
 
 use crate::periodic::PeriodicBox;
 use crate::state::Vec3;
+use clip::RowCells;
 use rayon::prelude::*;
 use table::CellTable;
 
@@ -31,9 +36,10 @@ use table::CellTable;
 /// it would double the lists' memory at every rebuild).
 #[derive(Clone, Debug, Default)]
 pub struct NeighbourLists {
-    /// The segments of neighbour indices.
-    segments: Vec<Vec<u32>>,
-    /// Per particle: `(segment, start, near end, end)` within its segment.
+    /// The segments of encoded neighbour lists ([`ids::encode`]: 16-bit differences).
+    segments: Vec<Vec<u16>>,
+    /// Per particle: `(segment, start, near end, end)`, in words of its segment; the near and
+    /// the far part are each encoded from the particle's own index.
     loc: Vec<[u32; 4]>,
     /// The box the pairs were found in: every pair vector `x_i − x_j` of these lists is
     /// [`NeighbourLists::delta`] (the minimum image along periodic axes).
@@ -42,26 +48,29 @@ pub struct NeighbourLists {
 
 impl NeighbourLists {
     #[inline(always)]
-    fn slice(&self, i: usize, from: usize, to: usize) -> &[u32] {
+    fn part(&self, i: usize, from: usize, to: usize) -> Ids<'_> {
         let l = self.loc[i];
-        &self.segments[l[0] as usize][l[from] as usize..l[to] as usize]
+        Ids::new(
+            &self.segments[l[0] as usize][l[from] as usize..l[to] as usize],
+            i as u32,
+        )
     }
     /// Near neighbours of `i` (within support + skin).
     #[inline(always)]
-    pub fn near(&self, i: usize) -> &[u32] {
-        self.slice(i, 1, 2)
+    pub fn near(&self, i: usize) -> Ids<'_> {
+        self.part(i, 1, 2)
     }
     /// The near neighbours of `i`, then its far ones of higher index (each far pair is in
     /// one list only: [`NeighbourLists::far`]).
     #[inline(always)]
-    pub fn all(&self, i: usize) -> &[u32] {
-        self.slice(i, 1, 3)
+    pub fn all(&self, i: usize) -> std::iter::Chain<Ids<'_>, Ids<'_>> {
+        self.near(i).chain(self.far(i))
     }
     /// The far neighbours `j > i` of `i` (beyond support + skin, within the far radius + skin):
     /// each far pair once, in the list of its lower index.
     #[inline(always)]
-    pub fn far(&self, i: usize) -> &[u32] {
-        self.slice(i, 2, 3)
+    pub fn far(&self, i: usize) -> Ids<'_> {
+        self.part(i, 2, 3)
     }
     /// `x_i − x_j` [m] of a listed pair (the minimum image along periodic axes).
     #[inline(always)]
@@ -76,13 +85,15 @@ impl NeighbourLists {
     pub fn is_empty(&self) -> bool {
         self.loc.is_empty()
     }
-    /// Total entries over all lists.
+    /// Total entries over all lists (decodes them all).
     pub fn entries(&self) -> usize {
-        self.segments.iter().map(|s| s.len()).sum()
+        (0..self.len())
+            .map(|i| self.near(i).count() + self.far(i).count())
+            .sum()
     }
     /// Bytes held.
     pub fn memory_bytes(&self) -> usize {
-        4 * self.segments.iter().map(|s| s.capacity()).sum::<usize>() + 16 * self.loc.capacity()
+        2 * self.segments.iter().map(|s| s.capacity()).sum::<usize>() + 16 * self.loc.capacity()
     }
 }
 
@@ -130,7 +141,7 @@ pub struct NeighbourSearch {
     wall_keys: Vec<u64>,
     /// Current lists (fluid particles, then walls: walls list only fluid neighbours).
     pub lists: NeighbourLists,
-    /// Per segment: (near count, total count) of each particle (kept for reuse).
+    /// Per segment: (near words, total words) of each particle (kept for reuse).
     counts: Vec<Vec<(u32, u32)>>,
     /// Dense cell starts of the fluid and of the walls (unused when their box is too large).
     fluid_table: CellTable,
@@ -223,6 +234,7 @@ impl NeighbourSearch {
         let near_cut = self.near_radius_m + self.skin_m;
         let far_cut = self.far_radius_m + self.skin_m;
         let (near2, far2) = (near_cut * near_cut, far_cut * far_cut);
+        let inv_cell = 1.0 / self.cell_m;
         let fk = &self.fluid_keys;
         let wk = &self.wall_keys;
         let (ft, wt) = (&self.fluid_table, &self.wall_table);
@@ -270,7 +282,14 @@ impl NeighbourSearch {
                         near_buf.resize(candidates, 0);
                         far_buf.resize(candidates, 0);
                     }
+                    let (f_cells, w_cells) = (
+                        RowCells::new(fk, fk[s], &f_ranges),
+                        RowCells::new(wk, fk[s], &w_ranges),
+                    );
                     for i in s..e {
+                        let reach = clip::window(&pos[i], inv_cell, far_cut);
+                        let (f_ranges, w_ranges) =
+                            (f_cells.clipped(&reach), w_cells.clipped(&reach));
                         let (nn, nf) = scan_fluid(
                             pos,
                             i,
@@ -280,9 +299,7 @@ impl NeighbourSearch {
                             (near2, far2),
                             (&mut near_buf, &mut far_buf),
                         );
-                        list.extend_from_slice(&near_buf[..nn]);
-                        list.extend_from_slice(&far_buf[..nf]);
-                        counts.push((nn as u32, (nn + nf) as u32));
+                        counts.push(push_list(list, i, &near_buf[..nn], &far_buf[..nf]));
                     }
                 }
             });
@@ -303,7 +320,10 @@ impl NeighbourSearch {
                     if buf.len() < candidates {
                         buf.resize(candidates, 0);
                     }
+                    let f_cells = RowCells::new(fk, wk[s], &f_ranges);
                     for iw in s..e {
+                        let reach = clip::window(&pos[n_fluid + iw], inv_cell, near_cut);
+                        let f_ranges = f_cells.clipped(&reach);
                         let (n, _) = scan::<false>(
                             pos,
                             n_fluid + iw,
@@ -313,8 +333,7 @@ impl NeighbourSearch {
                             (near2, near2),
                             (&mut buf, &mut []),
                         );
-                        list.extend_from_slice(&buf[..n]);
-                        counts.push((n as u32, n as u32));
+                        counts.push(push_list(list, n_fluid + iw, &buf[..n], &[]));
                     }
                 }
             });
@@ -338,11 +357,11 @@ impl NeighbourSearch {
         lists.loc.reserve(n_total);
         for (k, c) in self.counts.iter().enumerate() {
             let mut offset = 0u32;
-            for &(n_near, n_all) in c {
+            for &(near_words, all_words) in c {
                 lists
                     .loc
-                    .push([k as u32, offset, offset + n_near, offset + n_all]);
-                offset += n_all;
+                    .push([k as u32, offset, offset + near_words, offset + all_words]);
+                offset += all_words;
             }
         }
         debug_assert_eq!(lists.loc.len(), n_total);
@@ -421,6 +440,16 @@ fn scan<const FAR: bool>(
         }
     }
     (nn, nf)
+}
+
+/// Appends particle `i`'s lists to its segment `words`: its near entries, then its far ones,
+/// each part encoded from `i`; returns the words of the near part and of both.
+fn push_list(words: &mut Vec<u16>, i: usize, near: &[u32], far: &[u32]) -> (u32, u32) {
+    let start = words.len();
+    ids::encode(words, i as u32, near);
+    let near_end = words.len();
+    ids::encode(words, i as u32, far);
+    ((near_end - start) as u32, (words.len() - start) as u32)
 }
 
 /// Runs `(start, end)` of equal keys in a sorted key array.

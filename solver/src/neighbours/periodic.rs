@@ -194,9 +194,7 @@ impl NeighbourSearch {
                                 .for_each(|&j| test(n_fluid + j as usize));
                         }
                     }
-                    list.extend_from_slice(&near);
-                    list.extend_from_slice(&far);
-                    counts.push((near.len() as u32, (near.len() + far.len()) as u32));
+                    counts.push(super::push_list(list, i, &near, &far));
                 }
             });
         self.finish_build(pos.len(), n_fluid);

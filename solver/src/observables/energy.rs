@@ -34,16 +34,11 @@ pub fn interfacial_energy(model: &Model, p: &Particles, lists: &NeighbourLists) 
         let mut ei = 0.5 * model.pairs.c(a, a) * model.bulk_potential_sum_m3;
         // a near pair of two liquid particles is in both lists (half of it here), a far pair
         // in one (all of it), a wall pair in the liquid particle's only
-        let n_near = lists.near(i).len();
-        for (k, &j) in lists.all(i).iter().enumerate() {
-            let j = j as usize;
+        let near = lists.near(i).map(|j| (j, j < p.n_fluid));
+        for (j, in_both) in near.chain(lists.far(i).map(|j| (j, false))) {
             let r = lists.delta(p.pos[i], p.pos[j]).norm();
             let c = model.pairs.c(a, p.phase[j] as usize);
-            let share = if j < p.n_fluid && k < n_near {
-                0.5
-            } else {
-                1.0
-            };
+            let share = if in_both { 0.5 } else { 1.0 };
             ei -= share * c * pot.p(r);
         }
         e += ei;
@@ -93,8 +88,7 @@ pub fn wall_repulsion_energy(model: &Model, p: &Particles, lists: &NeighbourList
     let mut e = 0.0;
     for i in 0..p.n_fluid {
         let d = model.wall_repulsion_strength_j[p.phase[i] as usize];
-        for &j in lists.all(i) {
-            let j = j as usize;
+        for j in lists.all(i) {
             if j >= p.n_fluid {
                 e += term.pair_energy(d, lists.delta(p.pos[i], p.pos[j]).norm());
             }

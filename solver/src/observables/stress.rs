@@ -37,9 +37,8 @@ pub fn particle_virials<K: Kernel>(
                 out[i][3 * r + c] += m * v[r] * v[c];
             }
         }
-        let n_near = lists.near(i).len();
-        for (k, &j) in lists.all(i).iter().enumerate() {
-            let j = j as usize;
+        let near = lists.near(i).map(|j| (j, false));
+        for (j, far) in near.chain(lists.far(i).map(|j| (j, true))) {
             if j >= p.n_fluid {
                 continue;
             }
@@ -65,7 +64,7 @@ pub fn particle_virials<K: Kernel>(
                 for c in 0..3 {
                     let half = 0.5 * d[r] * d[c] * f;
                     out[i][3 * r + c] += half;
-                    if k >= n_near {
+                    if far {
                         out[j][3 * r + c] += half;
                     }
                 }

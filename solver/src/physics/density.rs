@@ -36,13 +36,14 @@ pub fn summation<K: Kernel>(
         .par_iter_mut()
         .zip(active.par_iter_mut())
         .enumerate()
-        .for_each(|(i, (rho, mask))| {
+        .for_each_init(Vec::new, |near, (i, (rho, mask))| {
+            lists.near(i).decode_into(near);
             let pi = pos[i];
             let mut s = w0;
             let mut bits = 0u64;
             // gather, evaluate W branch-free over the chunk (vectorisable), then add in list
             // order: the same sum, bit for bit, as a scalar loop
-            for (c, chunk) in lists.near(i).chunks(CHUNK).enumerate() {
+            for (c, chunk) in near.chunks(CHUNK).enumerate() {
                 let mut r2 = [f64::INFINITY; CHUNK];
                 if lists.periodic.is_periodic() {
                     for (k, &j) in chunk.iter().enumerate() {
@@ -86,8 +87,7 @@ fn same_phase<'a, K: Kernel>(
 ) -> impl Iterator<Item = (Vec3, f64, usize)> + 'a {
     let support2 = kernel.support_m() * kernel.support_m();
     let (pi, ph) = (pos[i], phase[i]);
-    lists.near(i).iter().filter_map(move |&j| {
-        let j = j as usize;
+    lists.near(i).filter_map(move |j| {
         if j >= n_fluid || phase[j] != ph {
             return None;
         }

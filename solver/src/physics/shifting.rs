@@ -63,8 +63,7 @@ pub fn displacements<K: Kernel>(
                 own: Vec3::zeros(),
                 fill: w0,
             };
-            for &j in lists.near(i) {
-                let j = j as usize;
+            for j in lists.near(i) {
                 let d = lists.delta(pi, pos[j]);
                 let r2 = d.norm_squared();
                 if r2 >= support2 || r2 == 0.0 {
@@ -89,8 +88,7 @@ pub fn displacements<K: Kernel>(
         // neighbours' keep the boundary's direction without the particle's own disorder)
         let mut normal = Vec3::zeros();
         let mut near_boundary = g.fill < boundary_sum;
-        for &j in lists.near(i) {
-            let j = j as usize;
+        for j in lists.near(i) {
             if j >= n_fluid || phase[j] != phase[i] {
                 continue;
             }

@@ -44,8 +44,7 @@ pub fn update<K: Kernel>(
             let (mut sw, mut sp, mut srho0) = (0.0, 0.0, 0.0);
             let mut srx = Vec3::zeros();
             let mut sv = Vec3::zeros();
-            for &f in lists.near(n_fluid + k) {
-                let f = f as usize;
+            for f in lists.near(n_fluid + k) {
                 let r = lists.delta(xw, fluid_pos[f]);
                 let r2 = r.norm_squared();
                 if r2 >= support2 {

@@ -355,8 +355,7 @@ pub fn wall_adhesion(
             let c = m.pairs.c(0, 1);
             let mut e = 0.0;
             for i in 0..p.n_fluid {
-                for &j in sim.search.lists.all(i) {
-                    let j = j as usize;
+                for j in sim.search.lists.all(i) {
                     if j < p.n_fluid {
                         continue;
                     }

@@ -250,21 +250,14 @@ impl Simulation {
         let total: usize = (0..p.n_fluid)
             .into_par_iter()
             .map(|i| {
-                let n_near = lists.near(i).len();
+                let within = |&j: &usize| lists.delta(p.pos[i], p.pos[j]).norm_squared() < r2;
                 // a far pair of two liquid particles is listed once and counts for both
-                lists
-                    .all(i)
-                    .iter()
-                    .enumerate()
-                    .filter(|&(_, &j)| lists.delta(p.pos[i], p.pos[j as usize]).norm_squared() < r2)
-                    .map(|(k, &j)| {
-                        if k >= n_near && (j as usize) < p.n_fluid {
-                            2
-                        } else {
-                            1
-                        }
-                    })
-                    .sum::<usize>()
+                let far: usize = lists
+                    .far(i)
+                    .filter(within)
+                    .map(|j| if j < p.n_fluid { 2 } else { 1 })
+                    .sum();
+                lists.near(i).filter(within).count() + far
             })
             .sum();
         total as f64 / p.n_fluid.max(1) as f64

@@ -30,8 +30,8 @@ pub fn components(points: &[[f64; 3]], link_m: f64) -> usize {
         i
     }
     for i in 0..sorted.len() {
-        for &j in search.lists.near(i) {
-            let (a, b) = (root(&mut parent, i), root(&mut parent, j as usize));
+        for j in search.lists.near(i) {
+            let (a, b) = (root(&mut parent, i), root(&mut parent, j));
             if a != b {
                 parent[a.max(b)] = a.min(b);
             }

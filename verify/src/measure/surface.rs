@@ -154,18 +154,13 @@ impl Table {
 
     /// Neighbours of liquid particle `i` (cloud order; walls as `n + wall index`).
     fn of(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
-        self.search
-            .lists
-            .near(self.rank[i] as usize)
-            .iter()
-            .map(move |&j| {
-                let j = j as usize;
-                if j < self.n {
-                    self.perm_fluid[j] as usize
-                } else {
-                    self.n + self.perm_wall[j - self.n] as usize
-                }
-            })
+        self.search.lists.near(self.rank[i] as usize).map(move |j| {
+            if j < self.n {
+                self.perm_fluid[j] as usize
+            } else {
+                self.n + self.perm_wall[j - self.n] as usize
+            }
+        })
     }
 }
 

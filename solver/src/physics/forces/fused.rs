@@ -45,6 +45,8 @@ pub const BLOCK: usize = 256;
 struct Scratch<L> {
     rel: Relative,
     lanes: L,
+    /// The particle's near entries, decoded.
+    near: Vec<u32>,
     visit: [u32; ACTIVE_BITS],
     booked: Booked,
 }
@@ -61,6 +63,7 @@ pub fn fluid_forces<K: Kernel, T: PairTerm>(
     let scratch = || Scratch {
         rel: Relative::new(),
         lanes: T::Lanes::new(),
+        near: Vec::new(),
         visit: [0u32; ACTIVE_BITS],
         booked: Booked::new(),
     };
@@ -150,7 +153,8 @@ fn particle<K: Kernel, T: PairTerm>(
     let own = terms.own(me);
     let mut f = Vec3::zeros();
     let mut dr = 0.0;
-    for chunk in near_entries(inp.lists, inp.active[i], i, &mut s.visit) {
+    inp.lists.near(i).decode_into(&mut s.near);
+    for chunk in near_entries(&s.near, inp.active[i], &mut s.visit) {
         let rel = &mut s.rel;
         let mut has_wall = false;
         for (n, &j) in chunk.iter().enumerate() {
@@ -239,17 +243,15 @@ fn pair_sums<K: Kernel, T: PairTerm>(
     sums
 }
 
-/// The near entries of `i` that interact, in list order, as chunks: among the first
+/// The entries of a near list `near` that interact, in list order, as chunks: among the first
 /// `ACTIVE_BITS` entries those marked in `active` (copied into `visit`), then the rest;
 /// when all marked entries interact (r_e beyond the support), the list itself.
 #[inline(always)]
 fn near_entries<'v>(
-    lists: &'v NeighbourLists,
+    near: &'v [u32],
     active: u64,
-    i: usize,
     visit: &'v mut [u32; ACTIVE_BITS],
 ) -> impl Iterator<Item = &'v [u32]> {
-    let near = lists.near(i);
     let (masked, rest) = near.split_at(near.len().min(ACTIVE_BITS));
     let all = low_bits(masked.len());
     let mut bits = active & all;

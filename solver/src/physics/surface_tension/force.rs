@@ -89,7 +89,14 @@ pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &m
             phase: term.phase[i] as usize,
         });
         let mut f = Vec3::zeros();
-        for chunk in lists.far(i).chunks(CHUNK) {
+        let mut ids = lists.far(i);
+        let mut chunk = [0u32; CHUNK];
+        loop {
+            let m = ids.fill(&mut chunk);
+            if m == 0 {
+                break;
+            }
+            let chunk = &chunk[..m];
             let (mut dx, mut dy, mut dz, mut c) =
                 ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for (k, &j) in chunk.iter().enumerate() {
@@ -100,7 +107,6 @@ pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &m
                 dz[k] = d.z;
                 c[k] = row[term.phase[j] as usize];
             }
-            let m = chunk.len();
             term.periodic
                 .image_lanes(&mut dx[..m], &mut dy[..m], &mut dz[..m]);
             let mut s = [0.0; CHUNK];

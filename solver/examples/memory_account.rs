@@ -42,6 +42,7 @@ fn main() {
         + p.id.capacity() as f64 * 4.0;
     let lists = sim.search.lists.memory_bytes() as f64;
     let index = sim.search.index_memory_bytes() as f64;
-    println!("particles {:.0} B, lists {:.0} B, keys and cell tables {:.0} B ({} entries = {:.0} B used) per particle; RSS growth {:.0} B per particle",
-        parts / n, lists / n, index / n, sim.search.lists.entries(), sim.search.lists.entries() as f64 * 4.0 / n, (rss() - base) / n);
+    let (entries, words) = (sim.search.lists.entries(), sim.search.lists.words());
+    println!("particles {:.0} B, lists {:.0} B, keys and cell tables {:.0} B per particle; list entries {:.1} per particle in {:.1} 16-bit words ({:.0} B used); RSS growth {:.0} B per particle",
+        parts / n, lists / n, index / n, entries as f64 / n, words as f64 / n, words as f64 * 2.0 / n, (rss() - base) / n);
 }

@@ -91,6 +91,10 @@ impl NeighbourLists {
             .map(|i| self.near(i).count() + self.far(i).count())
             .sum()
     }
+    /// 16-bit words in use (an entry takes one, an escaped one three: [`ids`]).
+    pub fn words(&self) -> usize {
+        self.segments.iter().map(|s| s.len()).sum()
+    }
     /// Bytes held.
     pub fn memory_bytes(&self) -> usize {
         2 * self.segments.iter().map(|s| s.capacity()).sum::<usize>() + 16 * self.loc.capacity()

@@ -99,7 +99,7 @@ impl PairTerm for ArtificialViscosity<'_> {
         let pi_ij = (-self.alpha1 * self.c_m_s * phi + self.alpha2 * phi * phi)
             / (0.5 * (rho_i + l.rho[n]));
         let v = m_i * l.m[n] * pi_ij * k.dw_r;
-        let a = if k.inside && l.fluid[n] && k.vr < 0.0 {
+        let a = if k.inside & l.fluid[n] & (k.vr < 0.0) {
             v
         } else {
             0.0

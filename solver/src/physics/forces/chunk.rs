@@ -44,7 +44,7 @@ impl Relative {
             r,
             ir,
             apart,
-            inside: apart && r2 < support2,
+            inside: apart & (r2 < support2),
             dw_r: k.dw_dr_inside(r.min(k.support_m())) * ir, // dW/dr / r [1/m⁵]
             vr: self.vx[n] * dx + self.vy[n] * dy + self.vz[n] * dz,
         }

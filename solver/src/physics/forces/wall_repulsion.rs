@@ -71,7 +71,7 @@ impl PairTerm for Monaghan1994WallRepulsion<'_> {
         let q2 = self.range_m * self.range_m / k.r2; // (r0/r)²
         let q4 = q2 * q2;
         let v = d * (q4 * q4 * q4 - q4) / k.r2; // Monaghan 1994: D[(r0/r)¹² − (r0/r)⁴]/r²
-        s.central += if l.wall[n] && k.apart && q2 > 1.0 {
+        s.central += if l.wall[n] & k.apart & (q2 > 1.0) {
             v
         } else {
             0.0

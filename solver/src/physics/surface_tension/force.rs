@@ -70,7 +70,7 @@ impl<'a> PairTerm for PairwisePotential<'a> {
         let r_e = self.potential.r_e_m;
         // C_ij P'(r) e_ij: the force along x_ij per metre of x_ij
         let v = self.potential.pair_force_inside(l.c[n], k.r) * k.ir;
-        s.central += if k.apart && k.r2 < r_e * r_e { v } else { 0.0 };
+        s.central += if k.apart & (k.r2 < r_e * r_e) { v } else { 0.0 };
     }
     fn far_forces(&self, lists: &NeighbourLists, out: &mut [Vec3]) {
         far_pair_forces(self, lists, out);

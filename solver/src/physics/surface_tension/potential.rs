@@ -85,11 +85,14 @@ impl Kondo2007Potential {
         // the smoother orders' extra factor |a/l0|^(m−1) (a < 0 inside); exactly 1 for Kondo's, whose bits
         // are unchanged by the multiplication
         let u = a * (1.0 / self.l0_m);
-        let extra = match self.order {
-            2 => -u,
-            3 => u * u,
-            _ => 1.0,
-        };
+        // 1, −u or u² as the polynomial e0 + u (e1 + u e2), without a branch: the force loops
+        // are vectorised only if the pair's arithmetic has none (each form is exact: the
+        // zero coefficients add only zeros)
+        let o = self.order;
+        let e0 = f64::from(u8::from((o != 2) & (o != 3)));
+        let e1 = -f64::from(u8::from(o == 2));
+        let e2 = f64::from(u8::from(o == 3));
+        let extra = e0 + u * (e1 + u * e2);
         c_n_m2 * (r_m - self.l0_m) * (a * extra) // Eq. (15), Natsui 2021 (order 1)
     }
 }

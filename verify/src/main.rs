@@ -643,7 +643,7 @@ fn check_scene(
 }
 
 /// Builds `scene`'s particles, times `steps` steps on the current thread pool, and prints the
-/// particles, neighbours, the rate, and the whole run's estimated wall time and memory.
+/// particles, neighbours, the rate, the whole run's estimated wall time, and the sample's memory.
 fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
     let before = verify::output::run_info::peak_memory_bytes();
     let mut sim = solver::Simulation::new(scene)?;
@@ -670,7 +670,7 @@ fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
     );
     if let (Some(b), Some(a)) = (before, verify::output::run_info::peak_memory_bytes()) {
         println!(
-            "memory: {:.0} MB peak, {:.0} B per particle (fluid and wall) above the {:.0} MB the program holds before the scene",
+            "memory: {:.0} MB peak over the sample, {:.0} B per particle (fluid and wall) above the {:.0} MB the program holds before the scene; a whole run peaks higher, as the allocator's heap grows over it (measured in reports/performance.md)",
             a as f64 / 1e6,
             a.saturating_sub(b) as f64 / (n + sim.particles.n_wall()).max(1) as f64,
             b as f64 / 1e6

@@ -152,9 +152,9 @@ pub struct NeighbourSearch {
     wall_table: CellTable,
     /// Whether dense tables may be used (tests switch them off to compare with galloping).
     dense_tables: bool,
-    /// Per fluid particle: bit `k` says whether the `k`-th entry of `lists.near(i)` interacts at the current
-    /// positions (within the kernel support or `r_e`; `k < 64`, later entries are always
-    /// visited). A build sets every bit; the summation density narrows them at the positions
+    /// Per fluid particle: bit `k` says whether the `k`-th entry of `lists.near(i)` interacts at
+    /// the current positions (within the kernel support or `r_e`; `k < 64`, later entries are
+    /// always visited). A build sets every bit; the summation density narrows them at the positions
     /// the forces are then evaluated at, so that the force loop skips the skin's entries (a
     /// third of the list at the default skin) — they would add exact zeros.
     pub active: Vec<u64>,

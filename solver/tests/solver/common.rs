@@ -2,8 +2,6 @@
 
 use solver::{Scene, Simulation};
 
-/// A matte-like liquid block of `n`³ particles at spacing `l0` [m] centred at the origin, with
-/// the given extra TOML appended (effects etc.).
 /// An alumina disk 6e-4 m below the block of [`block_scene`] (θ = 60° for matte), to append to it.
 pub const ALUMINA_PLATE: &str = r#"
 [[solid]]
@@ -15,6 +13,8 @@ solid = "alumina"
 shape = { kind = "disk", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }
 "#;
 
+/// A matte-like liquid block of `n`³ particles at spacing `l0` [m] centred at the origin, with
+/// the given extra TOML appended (effects etc.).
 pub fn block_scene(n: usize, l0: f64, effects: &str, extra: &str) -> String {
     let half = n as f64 * l0 / 2.0;
     format!(

@@ -45,11 +45,18 @@ impl Reactions<'_> {
         } else if j < self.n_fluid {
             let s = k - self.own.len();
             if s >= self.spill.len() {
-                self.spill.resize(s + 1, Vec3::zeros());
+                grow(self.spill, s + 1);
             }
             self.spill[s] -= f;
         }
     }
+}
+
+/// Lengthens `spill` to `len` zeros: out of the hot loop, which then keeps its sums in registers.
+#[cold]
+#[inline(never)]
+fn grow(spill: &mut Vec<Vec3>, len: usize) {
+    spill.resize(len, Vec3::zeros());
 }
 
 /// Adds to `out[i]` (one per fluid particle) the pair forces [N] of every pair `(i, j > i)`:

@@ -109,18 +109,23 @@ pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &m
             }
             term.periodic
                 .image_lanes(&mut dx[..m], &mut dy[..m], &mut dz[..m]);
-            let mut s = [0.0; CHUNK];
+            // the pair forces F_ij [N] of the chunk, branch-free over all lanes (vectorised)
+            let (mut fx, mut fy, mut fz) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
             for k in 0..CHUNK {
                 let r2 = dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k];
                 let r = r2.sqrt();
                 // C_ij P'(r) / r: the force along x_ij per metre of x_ij [N/m]
                 let v = term.potential.pair_force_inside(c[k], r) / r; // Eq. (15), Natsui 2021
-                s[k] = if r2 < re2 && r2 > 0.0 { v } else { 0.0 };
+                let s = if r2 < re2 && r2 > 0.0 { v } else { 0.0 };
+                (fx[k], fy[k], fz[k]) = (dx[k] * s, dy[k] * s, dz[k] * s);
             }
+            // on i, in list order (a loop of its own: the sum stays in registers)
+            for k in 0..m {
+                f += Vec3::new(fx[k], fy[k], fz[k]);
+            }
+            // on each j (every j once per list, so the order of these is free)
             for (k, &j) in chunk.iter().enumerate() {
-                let fij = Vec3::new(dx[k] * s[k], dy[k] * s[k], dz[k] * s[k]);
-                f += fij;
-                reactions.subtract(j as usize, fij);
+                reactions.subtract(j as usize, Vec3::new(fx[k], fy[k], fz[k]));
             }
         }
         f

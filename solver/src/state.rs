@@ -52,28 +52,41 @@ impl Particles {
         self.pos.len() - self.n_fluid
     }
 
-    /// Reorders the fluid particles: new index `k` takes old index `perm[k]`.
-    pub(crate) fn permute_fluid(&mut self, perm: &[u32]) {
+    /// Reorders the fluid particles: new index `k` takes old index `perm[k]`; `scratch` holds
+    /// the old values (its buffers are reused from one rebuild to the next).
+    pub(crate) fn permute_fluid(&mut self, perm: &[u32], scratch: &mut PermuteScratch) {
         use rayon::prelude::*;
-        fn gather<T: Copy + Send + Sync>(v: &mut [T], perm: &[u32]) {
+        fn gather<T: Copy + Send + Sync>(v: &mut [T], perm: &[u32], old: &mut Vec<T>) {
             if v.is_empty() {
                 return;
             }
-            let old: Vec<T> = v[..perm.len()].to_vec();
+            old.clear();
+            old.extend_from_slice(&v[..perm.len()]);
+            let old = &*old;
             v[..perm.len()]
                 .par_iter_mut()
                 .zip(perm.par_iter())
                 .for_each(|(x, &p)| *x = old[p as usize]);
         }
-        gather(&mut self.pos, perm);
-        gather(&mut self.vel, perm);
-        gather(&mut self.acc, perm);
-        gather(&mut self.rho, perm);
-        gather(&mut self.drho, perm);
-        gather(&mut self.pressure, perm);
-        gather(&mut self.vol, perm);
-        gather(&mut self.phase, perm);
-        gather(&mut self.id, perm);
-        gather(&mut self.x_ref, perm);
+        let s = scratch;
+        gather(&mut self.pos, perm, &mut s.vectors);
+        gather(&mut self.vel, perm, &mut s.vectors);
+        gather(&mut self.acc, perm, &mut s.vectors);
+        gather(&mut self.rho, perm, &mut s.scalars);
+        gather(&mut self.drho, perm, &mut s.scalars);
+        gather(&mut self.pressure, perm, &mut s.scalars);
+        gather(&mut self.vol, perm, &mut s.scalars);
+        gather(&mut self.phase, perm, &mut s.bytes);
+        gather(&mut self.id, perm, &mut s.ids);
+        gather(&mut self.x_ref, perm, &mut s.vectors);
     }
+}
+
+/// The buffers [`Particles::permute_fluid`] copies the old values into, one per element type.
+#[derive(Clone, Debug, Default)]
+pub struct PermuteScratch {
+    vectors: Vec<Vec3>,
+    scalars: Vec<f64>,
+    bytes: Vec<u8>,
+    ids: Vec<u32>,
 }

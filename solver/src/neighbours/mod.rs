@@ -198,23 +198,37 @@ impl NeighbourSearch {
         self.lists.periodic = periodic;
     }
 
-    /// Cell keys of `pos` [m].
-    pub fn keys(&self, pos: &[Vec3]) -> Result<Vec<u64>, CellKeyError> {
+    /// Cell keys of `pos` [m] into `keys` (its allocation reused).
+    fn keys_into(&self, pos: &[Vec3], keys: &mut Vec<u64>) -> Result<(), CellKeyError> {
         let inv = 1.0 / self.cell_m;
-        pos.par_iter().map(|p| cell_key(p, inv)).collect()
+        keys.resize(pos.len(), 0);
+        keys.par_iter_mut()
+            .zip(pos.par_iter())
+            .try_for_each(|(k, p)| cell_key(p, inv).map(|c| *k = c))
     }
 
-    /// The permutation that sorts `pos` by cell key (stable: ties keep their order, so the
-    /// result does not depend on the number of threads).
+    /// The permutation that sorts `pos` by cell key (ties keep their order, so the result does
+    /// not depend on the number of threads).
     pub fn sort_order(&self, pos: &[Vec3]) -> Result<Vec<u32>, CellKeyError> {
-        let inv = 1.0 / self.cell_m;
-        let keys: Vec<u64> = pos
-            .par_iter()
-            .map(|p| cell_key(p, inv))
-            .collect::<Result<_, _>>()?;
-        let mut perm: Vec<u32> = (0..pos.len() as u32).collect();
-        perm.par_sort_by_key(|&i| keys[i as usize]);
+        let (mut keys, mut perm) = (Vec::new(), Vec::new());
+        self.sort_order_into(pos, &mut keys, &mut perm)?;
         Ok(perm)
+    }
+
+    /// [`NeighbourSearch::sort_order`] into `perm`, with `keys` as scratch (both allocations
+    /// reused). An in-place sort on (key, index): unique pairs, so the same order as a stable
+    /// sort on the key, without the stable sort's buffer.
+    pub fn sort_order_into(
+        &self,
+        pos: &[Vec3],
+        keys: &mut Vec<u64>,
+        perm: &mut Vec<u32>,
+    ) -> Result<(), CellKeyError> {
+        self.keys_into(pos, keys)?;
+        perm.clear();
+        perm.extend(0..pos.len() as u32);
+        perm.par_sort_unstable_by_key(|&i| (keys[i as usize], i));
+        Ok(())
     }
 
     /// Builds the lists for fluid positions `pos[..n_fluid]` (sorted by key) and wall positions
@@ -225,9 +239,13 @@ impl NeighbourSearch {
             self.build_periodic(pos, n_fluid);
             return Ok(());
         }
-        self.fluid_keys = self.keys(&pos[..n_fluid])?;
+        let mut keys = std::mem::take(&mut self.fluid_keys);
+        self.keys_into(&pos[..n_fluid], &mut keys)?;
+        self.fluid_keys = keys;
         if self.wall_keys.len() != pos.len() - n_fluid {
-            self.wall_keys = self.keys(&pos[n_fluid..])?;
+            let mut keys = std::mem::take(&mut self.wall_keys);
+            self.keys_into(&pos[n_fluid..], &mut keys)?;
+            self.wall_keys = keys;
             let max = self.max_table_cells(self.wall_keys.len());
             self.wall_table.rebuild(&self.wall_keys, max);
         }

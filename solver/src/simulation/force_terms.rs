@@ -119,6 +119,7 @@ impl Simulation {
             pos: &self.particles.pos,
             phase: &self.particles.phase,
             periodic: self.search.lists.periodic,
+            spills: &self.far_spills,
         }
     }
 

@@ -84,6 +84,10 @@ pub struct Simulation {
     drho_next: Vec<f64>,
     /// This step's shifting displacement per fluid particle [m] (empty without shifting).
     shift: Vec<crate::state::Vec3>,
+    /// Scratch of the far pass, kept between steps.
+    far_spills: crate::physics::forces::pairs_once::Spills,
+    /// Scratch of the fluid's re-sort, kept between rebuilds.
+    rebuild: neighbours::RebuildScratch,
 }
 
 impl Simulation {
@@ -148,6 +152,8 @@ impl Simulation {
             max_acc2: 0.0,
             first_dt_s: 0.0,
             drho_next,
+            far_spills: Default::default(),
+            rebuild: Default::default(),
             shift,
         })
     }

@@ -45,11 +45,11 @@ impl Simulation {
                 .par_iter_mut()
                 .for_each(|x| *x = periodic.wrap(*x));
         }
-        let perm = self
-            .search
-            .sort_order(&self.particles.pos[..nf])
+        let r = &mut self.rebuild;
+        self.search
+            .sort_order_into(&self.particles.pos[..nf], &mut r.keys, &mut r.perm)
             .map_err(|source| SimError::Escaped { step, source })?;
-        self.particles.permute_fluid(&perm);
+        self.particles.permute_fluid(&r.perm, &mut r.old);
         self.particles
             .x_ref
             .copy_from_slice(&self.particles.pos[..nf]);
@@ -59,4 +59,13 @@ impl Simulation {
         self.timings.search_s += t0.elapsed().as_secs_f64();
         Ok(())
     }
+}
+
+/// Scratch of a rebuild (sort keys, the permutation, the old values), kept between rebuilds so
+/// that a rebuild allocates nothing of the particle count's size.
+#[derive(Clone, Debug, Default)]
+pub(super) struct RebuildScratch {
+    keys: Vec<u64>,
+    perm: Vec<u32>,
+    old: crate::state::PermuteScratch,
 }

@@ -15,6 +15,7 @@
 
 use crate::state::Vec3;
 use rayon::prelude::*;
+use std::sync::Mutex;
 
 /// Chunks per wave (the spills alive at once; the parallelism of a wave).
 pub const WAVE: usize = 32;
@@ -23,6 +24,38 @@ pub const WAVE: usize = 32;
 /// 32768 particles each (a function of the count alone: the partition fixes the summation order).
 pub fn chunk_len(n_fluid: usize) -> usize {
     (n_fluid / 32).clamp(1024, 32768)
+}
+
+/// Spill buffers kept from one pass to the next, so that a pass allocates none (a chunk's spill
+/// is tens of kB). A buffer is emptied before use, so which one a chunk gets changes nothing.
+#[derive(Default)]
+pub struct Spills(Mutex<Vec<Vec<Vec3>>>);
+
+impl Spills {
+    /// An empty buffer: a kept one if any.
+    fn take(&self) -> Vec<Vec3> {
+        let mut v = self.0.lock().expect("spill pool").pop().unwrap_or_default();
+        v.clear();
+        v
+    }
+
+    /// Keeps `v` for a later pass.
+    fn keep(&self, v: Vec<Vec3>) {
+        self.0.lock().expect("spill pool").push(v);
+    }
+}
+
+impl Clone for Spills {
+    /// Scratch: a clone starts with no buffers.
+    fn clone(&self) -> Self {
+        Spills::default()
+    }
+}
+
+impl std::fmt::Debug for Spills {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Spills")
+    }
 }
 
 /// Where the reaction `−F_ij` of a pair goes: into the chunk's own particles, or its spill.
@@ -61,8 +94,8 @@ fn grow(spill: &mut Vec<Vec3>, len: usize) {
 
 /// Adds to `out[i]` (one per fluid particle) the pair forces [N] of every pair `(i, j > i)`:
 /// `pairs(i, reactions)` returns `Σ_j F_ij` on `i` and subtracts each `F_ij` from `j` through
-/// `reactions`, in the order it sums them.
-pub fn each_pair_once<P>(out: &mut [Vec3], pairs: P)
+/// `reactions`, in the order it sums them. `spills` lends the chunks their spill buffers.
+pub fn each_pair_once<P>(out: &mut [Vec3], spills: &Spills, pairs: P)
 where
     P: Fn(usize, &mut Reactions) -> Vec3 + Sync,
 {
@@ -72,13 +105,13 @@ where
     for wave in (0..n_chunks).step_by(WAVE) {
         let lo = wave * len;
         let hi = ((wave + WAVE) * len).min(n_fluid);
-        let spills: Vec<(usize, Vec<Vec3>)> = out[lo..hi]
+        let waves_spills: Vec<(usize, Vec<Vec3>)> = out[lo..hi]
             .par_chunks_mut(len)
             .enumerate()
             .map(|(c, own)| {
                 let start = lo + c * len;
                 let end = start + own.len();
-                let mut spill = Vec::new();
+                let mut spill = spills.take();
                 for i in start..end {
                     let mut r = Reactions {
                         own: &mut *own,
@@ -92,10 +125,11 @@ where
                 (end, spill)
             })
             .collect();
-        for (end, spill) in &spills {
-            for (o, s) in out[*end..].iter_mut().zip(spill) {
+        for (end, spill) in waves_spills {
+            for (o, s) in out[end..].iter_mut().zip(&spill) {
                 *o += s;
             }
+            spills.keep(spill);
         }
     }
 }
@@ -111,14 +145,14 @@ mod tests {
     }
 
     /// Pairs `(i, j)` with `i < j ≤ i + reach` (and a few beyond the fluid: walls).
-    fn run(n: usize, reach: usize, threads: usize) -> Vec<Vec3> {
+    fn run(n: usize, reach: usize, threads: usize, spills: &Spills) -> Vec<Vec3> {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap();
         let mut out = vec![Vec3::zeros(); n];
         pool.install(|| {
-            each_pair_once(&mut out, |i, r| {
+            each_pair_once(&mut out, spills, |i, r| {
                 let mut f = Vec3::zeros();
                 for j in (i + 1)..(i + reach + 1).min(n + 3) {
                     let fij = force(i, j);
@@ -137,9 +171,11 @@ mod tests {
         // pairs across chunk and wave boundaries
         let (n, reach) = (70_000, 3000);
         assert_eq!((chunk_len(n), n.div_ceil(chunk_len(n))), (2187, 33));
-        let one = run(n, reach, 1);
-        for threads in [2, 3, 5] {
-            assert!(one == run(n, reach, threads), "{threads} threads");
+        let one = run(n, reach, 1, &Spills::default());
+        // one pool of spill buffers for all: buffers kept from a pass must not leak into the next
+        let kept = Spills::default();
+        for threads in [2, 3, 5, 2] {
+            assert!(one == run(n, reach, threads, &kept), "{threads} threads");
         }
         // against the gather over both sides: the same up to rounding of the summation order
         // the first particle, either side of a chunk boundary, either side of the wave boundary

@@ -10,7 +10,7 @@
 
 use super::potential::Kondo2007Potential;
 use crate::neighbours::NeighbourLists;
-use crate::physics::forces::pairs_once::each_pair_once;
+use crate::physics::forces::pairs_once::{each_pair_once, Spills};
 use crate::physics::forces::term::{
     Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK,
 };
@@ -31,6 +31,8 @@ pub struct PairwisePotential<'a> {
     pub phase: &'a [u8],
     /// The box pair vectors are measured in (the lists' [`crate::neighbours::NeighbourLists::periodic`]).
     pub periodic: crate::periodic::PeriodicBox,
+    /// Spill buffers of the far pass, kept between steps.
+    pub spills: &'a Spills,
 }
 
 /// `C_ij` [N/m²] per neighbour.
@@ -82,7 +84,7 @@ impl<'a> PairTerm for PairwisePotential<'a> {
 /// negative on `j` (`C_ij = C_ji`); a wall neighbour takes nothing. Eq. (15), Natsui 2021.
 pub fn far_pair_forces(term: &PairwisePotential, lists: &NeighbourLists, out: &mut [Vec3]) {
     let re2 = term.potential.r_e_m * term.potential.r_e_m;
-    each_pair_once(out, |i, reactions| {
+    each_pair_once(out, term.spills, |i, reactions| {
         let pi = term.pos[i];
         let row = term.own(Particle {
             i,

@@ -84,7 +84,7 @@ impl Particles {
 
 /// The buffers [`Particles::permute_fluid`] copies the old values into, one per element type.
 #[derive(Clone, Debug, Default)]
-pub struct PermuteScratch {
+pub(crate) struct PermuteScratch {
     vectors: Vec<Vec3>,
     scalars: Vec<f64>,
     bytes: Vec<u8>,

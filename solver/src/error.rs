@@ -17,6 +17,20 @@ pub enum SimError {
         /// Details.
         source: CellKeyError,
     },
+    /// The implicit viscous solve did not reach its tolerance.
+    #[error("step {step}, t = {time_s:e} s: the implicit viscous solve stopped at a relative residual of {relative_residual:.3e} after {iterations} iterations (tolerance {tolerance:e}) — raise effects.implicit_viscosity.max_iterations, loosen its relative_tolerance, or shorten the step (time.factors.cfl)")]
+    ViscousSolve {
+        /// Step at which it happened.
+        step: u64,
+        /// Simulated time [s].
+        time_s: f64,
+        /// Iterations taken.
+        iterations: u32,
+        /// `‖b − A v‖/‖b‖` reached [-].
+        relative_residual: f64,
+        /// The scene's tolerance [-].
+        tolerance: f64,
+    },
     /// The state became unphysical; the message names the step, particle, quantity and the most
     /// likely cause.
     #[error("step {step}, t = {time_s:e} s, particle {particle_id}: {quantity} — {cause}")]

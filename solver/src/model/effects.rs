@@ -1,6 +1,8 @@
 //! The effects built for a run, resolved from the scene's `[effects]`, `[density]` and walls.
 
-use crate::scene::{DensityScheme, NegativePressure, Reinit, Scene, WallBoundary};
+use crate::scene::{
+    DensityScheme, ImplicitViscosity, NegativePressure, Reinit, Scene, WallBoundary,
+};
 use serde::Serialize;
 
 /// The effects built for a run. Anything not listed here is not computed at all.
@@ -10,6 +12,9 @@ pub struct Effects {
     pub gravity: Option<[f64; 3]>,
     /// Laminar viscosity.
     pub laminar_viscosity: bool,
+    /// The laminar viscosity integrated implicitly, with this stopping rule (else explicitly,
+    /// as a term of the pair loop).
+    pub implicit_viscosity: Option<ImplicitViscosity>,
     /// Artificial viscosity `(α1, α2)`, if any.
     pub artificial_viscosity: Option<(f64, f64)>,
     /// Pairwise-potential surface and interfacial tension.
@@ -37,6 +42,7 @@ impl Effects {
         Effects {
             gravity: e.gravity,
             laminar_viscosity: e.laminar_viscosity,
+            implicit_viscosity: e.implicit_viscosity.filter(|_| e.laminar_viscosity),
             artificial_viscosity: e
                 .artificial_viscosity
                 .as_ref()
@@ -58,6 +64,11 @@ impl Effects {
         }
     }
 
+    /// Whether the laminar viscosity is a term of the pair loop (declared and not implicit).
+    pub fn explicit_laminar_viscosity(&self) -> bool {
+        self.laminar_viscosity && self.implicit_viscosity.is_none()
+    }
+
     /// Whether the density follows the continuity equation (else the summation).
     pub fn continuity(&self) -> bool {
         self.density == DensityScheme::Continuity
@@ -70,7 +81,13 @@ impl Effects {
             v.push(format!("gravity {g:?} m/s²"));
         }
         if self.laminar_viscosity {
-            v.push("laminar viscosity".into());
+            v.push(match self.implicit_viscosity {
+                None => "laminar viscosity".into(),
+                Some(iv) => format!(
+                    "laminar viscosity (implicit: backward Euler, conjugate gradients to a relative residual of {:e})",
+                    iv.relative_tolerance
+                ),
+            });
         }
         if let Some((a1, a2)) = self.artificial_viscosity {
             v.push(format!("artificial viscosity (α1 = {a1}, α2 = {a2})"));

@@ -268,7 +268,8 @@ impl Model {
     pub fn static_step_limits(&self) -> (Option<f64>, Option<f64>) {
         let f = &self.time.factors;
         let h = self.h_m;
-        let viscous = if self.effects.laminar_viscosity {
+        // the implicit solve is stable for any step: no viscous limit then
+        let viscous = if self.effects.explicit_laminar_viscosity() {
             (0..self.n_liquids)
                 .filter(|&a| self.mu[a] > 0.0)
                 .map(|a| f.viscous * self.rho0[a] * h * h / self.mu[a]) // docs/model.md §3

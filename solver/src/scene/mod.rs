@@ -370,6 +370,42 @@ pub struct Effects {
     /// boundary near a free surface, another liquid or a wall. Omit for none (the default).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub particle_shifting: Option<ParticleShifting>,
+    /// Laminar viscosity integrated implicitly (backward Euler, conjugate gradients) instead of
+    /// explicitly: the viscous step limit `0.125 ρh²/μ` no longer applies, for very viscous
+    /// liquids. Needs `laminar_viscosity`; walls must be free-slip. Omit for the explicit term
+    /// (the default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub implicit_viscosity: Option<ImplicitViscosity>,
+}
+
+/// The implicit viscous solve's stopping rule.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ImplicitViscosity {
+    /// Stop when the residual is at most this fraction of the right-hand side's norm [-].
+    /// Default 1e-8.
+    #[serde(default = "f_1e_8")]
+    pub relative_tolerance: f64,
+    /// Iterations after which a solve that has not converged stops the run. Default 200.
+    #[serde(default = "default_max_iterations")]
+    pub max_iterations: u32,
+}
+
+impl Default for ImplicitViscosity {
+    fn default() -> Self {
+        ImplicitViscosity {
+            relative_tolerance: f_1e_8(),
+            max_iterations: default_max_iterations(),
+        }
+    }
+}
+
+fn f_1e_8() -> f64 {
+    1e-8
+}
+
+fn default_max_iterations() -> u32 {
+    200
 }
 
 /// Coefficients of particle shifting.

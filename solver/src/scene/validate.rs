@@ -2,7 +2,7 @@
 //! Checks that need the particles (counts, overlaps) and the time-step limits are made when the
 //! simulation is built ([`crate::Simulation::new`]).
 
-use super::{shapes::on_lattice_plane, DensityScheme, Reinit, Scene, SceneError};
+use super::{shapes::on_lattice_plane, DensityScheme, Reinit, Scene, SceneError, WallBoundary};
 use std::collections::BTreeSet;
 
 type R = Result<(), SceneError>;
@@ -294,6 +294,39 @@ fn effects(s: &Scene) -> R {
                 "effects.particle_shifting.coefficient",
                 ps.coefficient,
                 "A in δr = −A h U dt ∇C: in (0, 8] (4 is Sun et al. 2017's; larger moves a particle more than its spacing per step)",
+            ));
+        }
+    }
+    if let Some(iv) = &e.implicit_viscosity {
+        if !e.laminar_viscosity {
+            return Err(SceneError::invalid(
+                "effects.implicit_viscosity",
+                "set",
+                "integrates the laminar viscosity: it needs effects.laminar_viscosity = true",
+            ));
+        }
+        if let Some(w) = s.walls.iter().find(|w| w.boundary == WallBoundary::NoSlip) {
+            return Err(SceneError::invalid(
+                "effects.implicit_viscosity",
+                "set",
+                format!(
+                    "wall \"{}\" is no-slip; the implicit viscous solve supports free-slip walls only (its ghost velocities would make the system non-symmetric): make the wall free-slip or use the explicit viscosity",
+                    w.name
+                ),
+            ));
+        }
+        if !(iv.relative_tolerance > 0.0 && iv.relative_tolerance <= 1e-3) {
+            return Err(SceneError::invalid(
+                "effects.implicit_viscosity.relative_tolerance",
+                iv.relative_tolerance,
+                "the solve's relative residual: in (0, 1e-3] (a looser one leaves a velocity error larger than the step's own)",
+            ));
+        }
+        if iv.max_iterations == 0 {
+            return Err(SceneError::invalid(
+                "effects.implicit_viscosity.max_iterations",
+                0,
+                "at least 1",
             ));
         }
     }

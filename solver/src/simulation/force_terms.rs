@@ -52,7 +52,7 @@ impl Simulation {
             if e.interfacial_tension => self.potential_term(),
             always => self.pressure_term(),
             if e.artificial_viscosity.is_some() => self.artificial_viscosity_term(),
-            if e.laminar_viscosity => self.laminar_viscosity_term(),
+            if e.explicit_laminar_viscosity() => self.laminar_viscosity_term(),
             if e.continuity() => self.continuity_term(),
             if e.wall_repulsion => self.wall_repulsion_term(),
         )

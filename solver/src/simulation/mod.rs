@@ -10,6 +10,9 @@
 //! 5. kick: `v ← v + ½dt a_{n+1}` (continuity: trapezoidal corrector `ρ ← ρ + ½dt (D_{n+1} −
 //!    D_n)`), health check, and periodic density re-initialisation.
 //!
+//! With implicit viscosity both kicks also solve the laminar term by backward Euler at the
+//! kick's positions (`viscous.rs`), and the drift uses the first kick's result.
+//!
 //! Each kick also books the work of the dissipative terms in it (the energy budget,
 //! [`crate::physics::forces::ledger`]): a few multiplications per step, from the power the
 //! force loop returns.
@@ -22,6 +25,9 @@ mod force_terms;
 mod limits;
 mod neighbours;
 mod shifting;
+mod viscous;
+
+pub use viscous::ViscousSolves;
 
 use crate::error::SimError;
 use crate::health;
@@ -88,6 +94,10 @@ pub struct Simulation {
     far_spills: crate::physics::forces::pairs_once::Spills,
     /// Scratch of the fluid's re-sort, kept between rebuilds.
     rebuild: neighbours::RebuildScratch,
+    /// The implicit viscous solves of this process (zero without implicit viscosity).
+    pub viscous_solves: ViscousSolves,
+    /// Scratch of the implicit viscous solve, kept between steps.
+    viscous: viscous::ViscousScratch,
 }
 
 impl Simulation {
@@ -154,6 +164,8 @@ impl Simulation {
             drho_next,
             far_spills: Default::default(),
             rebuild: Default::default(),
+            viscous_solves: Default::default(),
+            viscous: Default::default(),
             shift,
         })
     }
@@ -171,7 +183,19 @@ impl Simulation {
         if let Some(a) = self.model.effects.particle_shifting {
             self.shift_particles::<K>(a, dt);
         }
-        {
+        let implicit = self.model.effects.implicit_viscosity.is_some();
+        if implicit {
+            // the kick with the viscous solve (its time goes to the forces'), then the drift
+            let tv = Instant::now();
+            self.implicit_kick::<K>(half)?;
+            self.timings.integration_s -= tv.elapsed().as_secs_f64();
+            let p = &mut self.particles;
+            let nf = p.n_fluid;
+            p.pos[..nf]
+                .par_iter_mut()
+                .zip(p.vel[..nf].par_iter())
+                .for_each(|(x, v)| *x += *v * dt);
+        } else {
             let p = &mut self.particles;
             let nf = p.n_fluid;
             p.vel[..nf]
@@ -184,6 +208,10 @@ impl Simulation {
                 });
             // the booked terms' work in this kick, at its mean velocity (physics::forces::ledger)
             self.dissipation.kick(half);
+        }
+        {
+            let p = &mut self.particles;
+            let nf = p.n_fluid;
             if continuity {
                 p.rho[..nf]
                     .par_iter_mut()
@@ -203,13 +231,20 @@ impl Simulation {
         self.evaluate::<K>();
 
         let t0 = Instant::now();
-        {
+        if implicit {
+            let tv = Instant::now();
+            self.implicit_kick::<K>(half)?;
+            self.timings.integration_s -= tv.elapsed().as_secs_f64();
+        } else {
             let p = &mut self.particles;
             p.vel[..nf]
                 .par_iter_mut()
                 .zip(p.acc.par_iter())
                 .for_each(|(v, a)| *v += a * half);
             self.dissipation.kick(half); // likewise, with the new accelerations
+        }
+        {
+            let p = &mut self.particles;
             if continuity {
                 p.rho[..nf]
                     .par_iter_mut()

@@ -12,6 +12,7 @@ mod energy_budget;
 mod failures;
 mod far_pairs;
 mod fuzz_scenes;
+mod implicit_viscosity;
 mod lattice_energy;
 mod periodic;
 mod scene_errors;

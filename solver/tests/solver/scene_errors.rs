@@ -280,6 +280,45 @@ fn particle_shifting_coefficient_out_of_range() {
 }
 
 #[test]
+fn implicit_viscosity_without_its_term_with_no_slip_walls_or_a_bad_rule() {
+    assert_names(
+        &block_scene(6, 1e-4, "implicit_viscosity = {}", ""),
+        &["effects.implicit_viscosity", "laminar_viscosity = true"],
+    );
+    let viscous = "laminar_viscosity = true\nimplicit_viscosity = {}";
+    let no_slip = with_plate("90.0").replace(
+        "radius = 1.0e-3 }",
+        "radius = 1.0e-3 }\nboundary = \"no_slip\"",
+    );
+    assert_names(
+        &no_slip.replace(BASE_EFFECTS, &format!("{BASE_EFFECTS}\n{viscous}")),
+        &[
+            "effects.implicit_viscosity",
+            "\"plate\" is no-slip",
+            "free-slip",
+        ],
+    );
+    for (rule, field) in [
+        ("relative_tolerance = 0.0", "relative_tolerance"),
+        ("relative_tolerance = 0.01", "relative_tolerance"),
+        ("max_iterations = 0", "max_iterations"),
+    ] {
+        assert_names(
+            &block_scene(
+                6,
+                1e-4,
+                &format!("laminar_viscosity = true\nimplicit_viscosity = {{ {rule} }}"),
+                "",
+            ),
+            &[&format!("effects.implicit_viscosity.{field}")],
+        );
+    }
+    // and a valid one builds, free-slip plate included
+    let ok = with_plate("90.0").replace(BASE_EFFECTS, &format!("{BASE_EFFECTS}\n{viscous}"));
+    assert!(Simulation::new(&Scene::from_toml_str(&ok).unwrap()).is_ok());
+}
+
+#[test]
 fn a_name_that_would_break_a_csv_column() {
     // liquid names head the time series' columns: `slag, FeO` would split one in two
     let text = base().replace("name = \"matte\"", "name = \"slag, FeO\"");

@@ -1,0 +1,104 @@
+//! The kicks with implicit viscosity (`physics::implicit_viscosity`): each half kick solves the
+//! laminar term by backward Euler and books its work.
+
+use super::Simulation;
+use crate::error::SimError;
+use crate::kernel::Kernel;
+use crate::physics::forces::ledger::{channel, Ledger};
+use crate::physics::implicit_viscosity::{ViscousInput, ViscousOperator};
+use crate::state::Vec3;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::time::Instant;
+
+/// The implicit viscous solves of this process (not kept in checkpoints).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct ViscousSolves {
+    /// Solves made (two per step).
+    pub solves: u64,
+    /// Conjugate-gradient iterations over all solves.
+    pub iterations: u64,
+    /// The most iterations one solve took.
+    pub max_iterations: u32,
+}
+
+/// The operator's and the kick's buffers, kept between steps.
+#[derive(Clone, Debug, Default)]
+pub(super) struct ViscousScratch {
+    op: ViscousOperator,
+    before: Vec<Vec3>,
+}
+
+impl Simulation {
+    /// The half kick `u → u'` of `tau_s` [s] with implicit viscosity:
+    /// `(M/τ + K) u' = (M/τ)(u + τ a)` at the current positions, `a` the other forces'
+    /// accelerations. The explicit terms' work is booked as in the explicit kick; the viscous
+    /// work `Σ_i m_i (u'_i − u_i − τ a_i)·(u_i + u'_i)/2` — the kinetic energy change the
+    /// viscous impulse makes at the kick's mean velocity — goes to the laminar ledger.
+    pub(super) fn implicit_kick<K: Kernel>(&mut self, tau_s: f64) -> Result<(), SimError> {
+        let iv = self
+            .model
+            .effects
+            .implicit_viscosity
+            .expect("implicit kicks only with implicit viscosity");
+        let t0 = Instant::now();
+        let m = &self.model;
+        let p = &mut self.particles;
+        let nf = p.n_fluid;
+        let s = &mut self.viscous;
+        s.op.build(
+            &m.kernel_of::<K>(),
+            &ViscousInput {
+                pos: &p.pos,
+                vol: &p.vol,
+                phase: &p.phase,
+                mass: &m.mass,
+                mu_pair: &m.mu_pair,
+                n_phases: m.pairs.n_phases,
+                n_fluid: nf,
+                lists: &self.search.lists,
+            },
+        );
+        s.before.clear();
+        s.before.extend_from_slice(&p.vel[..nf]);
+        p.vel[..nf]
+            .par_iter_mut()
+            .zip(p.acc.par_iter())
+            .for_each(|(v, a)| *v += a * tau_s);
+        self.dissipation.kick(tau_s);
+        let out = s.op.solve(
+            &mut p.vel[..nf],
+            tau_s,
+            iv.relative_tolerance,
+            iv.max_iterations,
+        );
+        let mass = s.op.mass();
+        let work: f64 = (p.vel[..nf].par_chunks(256))
+            .zip(s.before.par_chunks(256))
+            .zip(p.acc.par_chunks(256).zip(mass.par_chunks(256)))
+            .map(|((v, u), (a, m))| {
+                (v.iter().zip(u).zip(a.iter().zip(m)))
+                    .map(|((v, u), (a, m))| m * (v - u - a * tau_s).dot(&((u + v) * 0.5)))
+                    .sum::<f64>()
+            })
+            .collect::<Vec<f64>>()
+            .iter()
+            .sum();
+        self.dissipation.dissipated_j[channel(Ledger::Laminar as usize, false)] -= work;
+        let st = &mut self.viscous_solves;
+        st.solves += 1;
+        st.iterations += out.iterations as u64;
+        st.max_iterations = st.max_iterations.max(out.iterations);
+        self.timings.forces_s += t0.elapsed().as_secs_f64();
+        if !out.converged {
+            return Err(SimError::ViscousSolve {
+                step: self.step,
+                time_s: self.time_s,
+                iterations: out.iterations,
+                relative_residual: out.relative_residual,
+                tolerance: iv.relative_tolerance,
+            });
+        }
+        Ok(())
+    }
+}

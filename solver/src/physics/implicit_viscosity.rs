@@ -139,22 +139,32 @@ impl ViscousOperator {
         &self.mass
     }
 
-    /// `y = diag ∘ x − Σ_j c_ij x_j` [N] (with `diag = m/τ + Σ_j c_ij`: `(M/τ + K) x`).
-    fn apply(&self, diag: &[f64], x: &[Vec3], y: &mut [Vec3]) {
-        y.par_iter_mut().enumerate().for_each(|(i, yi)| {
-            let (a, b) = (self.start[i], self.start[i + 1]);
-            let mut off = Vec3::zeros();
-            for (&j, &c) in self.j[a..b].iter().zip(&self.c[a..b]) {
-                off += x[j as usize] * c;
-            }
-            *yi = x[i] * diag[i] - off;
-        });
+    /// `y = diag ∘ x − Σ_j c_ij x_j` [N] (with `diag = m/τ + Σ_j c_ij`: `(M/τ + K) x`);
+    /// returns `x·y`, summed in blocks of [`BLOCK`] in particle order.
+    fn apply(&self, diag: &[f64], x: &[Vec3], y: &mut [Vec3]) -> f64 {
+        let partial: Vec<f64> = (y.par_chunks_mut(BLOCK).enumerate())
+            .map(|(b, ys)| {
+                let mut xy = 0.0;
+                for (k, yi) in ys.iter_mut().enumerate() {
+                    let i = b * BLOCK + k;
+                    let (lo, hi) = (self.start[i], self.start[i + 1]);
+                    let mut off = Vec3::zeros();
+                    for (&j, &c) in self.j[lo..hi].iter().zip(&self.c[lo..hi]) {
+                        off += x[j as usize] * c;
+                    }
+                    *yi = x[i] * diag[i] - off;
+                    xy += x[i].dot(yi);
+                }
+                xy
+            })
+            .collect();
+        partial.iter().sum()
     }
 
     /// The viscous force `−K v` [N] on each fluid particle (for tests and diagnostics).
     pub fn force(&self, v: &[Vec3]) -> Vec<Vec3> {
         let mut y = vec![Vec3::zeros(); v.len()];
-        self.apply(&self.sum_c, v, &mut y);
+        let _ = self.apply(&self.sum_c, v, &mut y);
         y.iter().map(|y| -y).collect()
     }
 
@@ -180,21 +190,32 @@ impl ViscousOperator {
         let mut res = dot(&r, &r).sqrt();
         let mut iterations = 0;
         while res > tolerance * b_norm && iterations < max_iterations {
-            self.apply(&diag, &p, &mut ap);
-            let alpha = rz / dot(&p, &ap);
-            v.par_iter_mut().zip(&p).for_each(|(v, p)| *v += p * alpha);
-            r.par_iter_mut().zip(&ap).for_each(|(r, a)| *r -= a * alpha);
-            z.par_iter_mut()
-                .zip(&r)
-                .zip(&diag)
-                .for_each(|((z, r), d)| *z = r / *d);
-            let rz_next = dot(&r, &z);
+            let alpha = rz / self.apply(&diag, &p, &mut ap);
+            // v += αp, r −= α Ap, z = r/diag, and the sums r·z, r·r: one pass, fixed blocks
+            let sums: Vec<(f64, f64)> = (v.par_chunks_mut(BLOCK))
+                .zip(r.par_chunks_mut(BLOCK))
+                .zip(z.par_chunks_mut(BLOCK))
+                .zip(p.par_chunks(BLOCK).zip(ap.par_chunks(BLOCK)))
+                .zip(diag.par_chunks(BLOCK))
+                .map(|((((v, r), z), (p, ap)), d)| {
+                    let (mut rz, mut rr) = (0.0, 0.0);
+                    for k in 0..v.len() {
+                        v[k] += p[k] * alpha;
+                        r[k] -= ap[k] * alpha;
+                        z[k] = r[k] / d[k];
+                        rz += r[k].dot(&z[k]);
+                        rr += r[k].dot(&r[k]);
+                    }
+                    (rz, rr)
+                })
+                .collect();
+            let rz_next: f64 = sums.iter().map(|s| s.0).sum();
+            res = sums.iter().map(|s| s.1).sum::<f64>().sqrt();
             let beta = rz_next / rz;
             rz = rz_next;
             p.par_iter_mut()
                 .zip(&z)
                 .for_each(|(p, z)| *p = z + *p * beta);
-            res = dot(&r, &r).sqrt();
             iterations += 1;
         }
         Solve {

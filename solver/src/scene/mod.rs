@@ -383,8 +383,10 @@ pub struct Effects {
 #[serde(deny_unknown_fields)]
 pub struct ImplicitViscosity {
     /// Stop when the residual is at most this fraction of the right-hand side's norm [-].
-    /// Default 1e-8.
-    #[serde(default = "f_1e_8")]
+    /// Default 1e-6 (docs/model.md §3: against 1e-10, the water–oil–Teflon scene's energies
+    /// after 632 steps agree to 1.3e-5 and its largest speed to 2.5e-4, at half the
+    /// iterations).
+    #[serde(default = "f_1e_6")]
     pub relative_tolerance: f64,
     /// Iterations after which a solve that has not converged stops the run. Default 200.
     #[serde(default = "default_max_iterations")]
@@ -394,14 +396,14 @@ pub struct ImplicitViscosity {
 impl Default for ImplicitViscosity {
     fn default() -> Self {
         ImplicitViscosity {
-            relative_tolerance: f_1e_8(),
+            relative_tolerance: f_1e_6(),
             max_iterations: default_max_iterations(),
         }
     }
 }
 
-fn f_1e_8() -> f64 {
-    1e-8
+fn f_1e_6() -> f64 {
+    1e-6
 }
 
 fn default_max_iterations() -> u32 {

@@ -8,11 +8,11 @@ use crate::physics::forces::ledger::{channel, Ledger};
 use crate::physics::implicit_viscosity::{ViscousInput, ViscousOperator};
 use crate::state::Vec3;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
 /// The implicit viscous solves of this process (not kept in checkpoints).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ViscousSolves {
     /// Solves made (two per step).
     pub solves: u64,
@@ -27,6 +27,10 @@ pub struct ViscousSolves {
 pub(super) struct ViscousScratch {
     op: ViscousOperator,
     before: Vec<Vec3>,
+    /// The positions [m] and volumes [m³] `op` was built at: a kick at the same ones (the
+    /// next step's first kick after this step's last) reuses it.
+    built_pos: Vec<Vec3>,
+    built_vol: Vec<f64>,
 }
 
 impl Simulation {
@@ -46,19 +50,26 @@ impl Simulation {
         let p = &mut self.particles;
         let nf = p.n_fluid;
         let s = &mut self.viscous;
-        s.op.build(
-            &m.kernel_of::<K>(),
-            &ViscousInput {
-                pos: &p.pos,
-                vol: &p.vol,
-                phase: &p.phase,
-                mass: &m.mass,
-                mu_pair: &m.mu_pair,
-                n_phases: m.pairs.n_phases,
-                n_fluid: nf,
-                lists: &self.search.lists,
-            },
-        );
+        let same = s.built_pos[..] == p.pos[..nf] && s.built_vol[..] == p.vol[..nf];
+        if !same {
+            s.built_pos.clear();
+            s.built_pos.extend_from_slice(&p.pos[..nf]);
+            s.built_vol.clear();
+            s.built_vol.extend_from_slice(&p.vol[..nf]);
+            s.op.build(
+                &m.kernel_of::<K>(),
+                &ViscousInput {
+                    pos: &p.pos,
+                    vol: &p.vol,
+                    phase: &p.phase,
+                    mass: &m.mass,
+                    mu_pair: &m.mu_pair,
+                    n_phases: m.pairs.n_phases,
+                    n_fluid: nf,
+                    lists: &self.search.lists,
+                },
+            );
+        }
         s.before.clear();
         s.before.extend_from_slice(&p.vel[..nf]);
         p.vel[..nf]

@@ -4,7 +4,7 @@
 
 use super::{atomic_write, RunError};
 use serde::{Deserialize, Serialize};
-use solver::simulation::StepTimings;
+use solver::simulation::{StepTimings, ViscousSolves};
 use solver::Simulation;
 use std::path::{Path, PathBuf};
 
@@ -72,6 +72,10 @@ pub struct RunInfo {
     pub neighbour_builds: u64,
     /// Wall-clock time per part of the step [s].
     pub timings: StepTimings,
+    /// With implicit viscosity: its solves in this process (a resumed run counts from the
+    /// resume).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscous_solves: Option<ViscousSolves>,
     /// Peak resident memory of the process at the end of the run [bytes] (Linux `VmHWM`; the
     /// run's own peak when it ran in its own process, as `verify run` does).
     #[serde(default)]
@@ -123,6 +127,7 @@ impl RunInfo {
             mean_neighbours: 0.0,
             neighbour_builds: 0,
             timings: Default::default(),
+            viscous_solves: None,
             peak_memory_bytes: None,
             warnings: Vec::new(),
             status: Status::Running,
@@ -141,6 +146,8 @@ impl RunInfo {
         self.mean_neighbours = sim.mean_neighbours();
         self.neighbour_builds = sim.search.builds;
         self.timings = sim.timings;
+        self.viscous_solves =
+            (sim.model.effects.implicit_viscosity.is_some()).then_some(sim.viscous_solves);
         self.peak_memory_bytes = peak_memory_bytes();
     }
 

@@ -4,14 +4,14 @@
 //! on it. Eq. 23 with σ_w = 72.8, σ_o = 20.1, σ_wo = 52 mN/m gives θ12 = 145.52° at the
 //! water/oil/Teflon line (inside the water); the oil spreads at 16.4° on the bare Teflon.
 //!
-//! **Departure from the paper:** the oil's viscosity, 9.35 Pa·s, is replaced by 0.05 Pa·s: at
-//! 9.35 Pa·s the explicit viscous step (`0.125 ρ h²/μ` ≈ 6e-7 s at l0 = 0.2 mm) over the
-//! spreading time (μR/σ ≈ 0.8 s) needs ~10⁶ steps. This is not shown to be harmless: the
-//! spreading coefficient σ_w − σ_o − σ_wo is only +0.7 mN/m, so which state the oil reaches may
-//! depend on the path, and with it on the viscosity. The run at the real viscosity is not made;
-//! the standard suite runs the pair again with the oil at 1 Pa·s (20 times more viscous, at
-//! about the same cost per step) and reports both end states. The oil's density is not given in
-//! the paper: 970 kg/m³ (a typical silicone oil) is assumed.
+//! The oil's viscosity is the paper's, 9.35 Pa·s, with the laminar viscosity integrated
+//! implicitly (`effects.implicit_viscosity`): explicitly its step limit `0.125 ρ h²/μ` (≈ 6e-7 s
+//! at l0 = 0.2 mm) would be ten times below the sound-speed step, over a spreading time
+//! μR/σ ≈ 0.8 s. The standard suite runs the pair again with the oil at 0.05 Pa·s — the
+//! lowered viscosity earlier versions of this case used — and reports both end states: the
+//! spreading coefficient σ_w − σ_o − σ_wo is only +0.7 mN/m, so which state the oil reaches
+//! may depend on the path. The oil's density is not given in the paper: 970 kg/m³ (a typical
+//! silicone oil) is assumed.
 
 use super::analysis::{self, Analysis};
 use super::paper_values;
@@ -36,8 +36,8 @@ const WATER: LiquidProps = LiquidProps {
     viscosity_pa_s: 1.5e-3,
     surface_tension_n_m: 0.0728,
 };
-/// Oil viscosity used [Pa·s] (the paper's is 9.35 Pa·s; see the module doc).
-const OIL_MU: f64 = 0.05;
+/// Oil viscosity [Pa·s] (the paper's).
+const OIL_MU: f64 = 9.35;
 const OIL: LiquidProps = LiquidProps {
     name: "oil",
     density_kg_m3: 970.0,
@@ -45,10 +45,12 @@ const OIL: LiquidProps = LiquidProps {
     surface_tension_n_m: 0.0201,
 };
 const SIGMA_WO: f64 = 0.052;
-/// The second, more viscous oil [Pa·s]: 1/9 of the real oil's, 20 times the standard run's.
-const VISCOUS_OIL_MU: f64 = 1.0;
-/// The run with [`VISCOUS_OIL_MU`].
-const VISCOUS_RUN: &str = "water_oil_mu_1";
+/// The lowered oil viscosity of the comparison run [Pa·s] (the one earlier versions used).
+const LOW_OIL_MU: f64 = 0.05;
+/// The run with [`LOW_OIL_MU`].
+const LOW_RUN: &str = "water_oil_mu_0.05";
+/// Its end [s]: about 50 spreading times μR/σ (4 ms) at that viscosity.
+const LOW_RUN_END_S: f64 = 0.2;
 const THETA_W: f64 = 108.9;
 const THETA_O: f64 = 16.4;
 const VOLUME_M3: f64 = 20.0e-9;
@@ -70,8 +72,9 @@ fn l0(f: Fidelity) -> f64 {
 fn end(f: Fidelity) -> f64 {
     match f {
         Fidelity::Smoke => 0.02,
-        Fidelity::Standard => 0.2,
-        Fidelity::Paper => 0.4,
+        // about one spreading time μR/σ ≈ 0.8 s of the real oil
+        Fidelity::Standard => 1.0,
+        Fidelity::Paper => 1.0,
     }
 }
 
@@ -92,11 +95,11 @@ impl Case for WaterOilTeflon {
         let l0 = l0(f);
         let why = match f {
             Fidelity::Smoke => "a seconds-scale check that the run holds together",
-            Fidelity::Standard => "R/l0 = 8.4 per drop; the oil film at the rim is only ~3 particles thick, so its angle is coarse; each liquid also alone on the Teflon (Eq. 23's ingredients), the three σ's from slabs, and the pair again with the oil at 1 Pa·s for 0.4 s (does the end state depend on the lowered viscosity?)",
+            Fidelity::Standard => "R/l0 = 8.4 per drop; the oil film at the rim is only ~3 particles thick, so its angle is coarse; each liquid also alone on the Teflon (Eq. 23's ingredients), the three σ's from slabs, and the pair again with the oil at 0.05 Pa·s for 0.2 s (does the end state depend on the viscosity?)",
             Fidelity::Paper => "R/l0 = 17 per drop",
         };
         format!(
-            "l0 = {:.2} mm, about {:.0} particles per 20 µL drop, {:.1} s; oil viscosity {OIL_MU} Pa·s instead of 9.35 (equilibrium only, see the case doc); {why}.",
+            "l0 = {:.2} mm, about {:.0} particles per 20 µL drop, {:.1} s; oil viscosity {OIL_MU} Pa·s (the paper's), implicit viscous solve; {why}.",
             l0 * 1e3,
             VOLUME_M3 / l0.powi(3),
             end(f)
@@ -113,6 +116,7 @@ impl Case for WaterOilTeflon {
             SceneBuilder::new(l0, sound_speed_for(&WATER, l0, 5.0))
                 .time(end(f), 2.0e-3)
                 .paper_effects()
+                .implicit_viscosity()
                 .gravity(GRAVITY_M_S2)
         };
         let plate = |b: SceneBuilder| {
@@ -145,18 +149,16 @@ impl Case for WaterOilTeflon {
             snapshot_times_s: vec![],
         }];
         if f != Fidelity::Smoke {
-            // the same at a 20 times more viscous oil, at about the same cost (the viscous step
-            // 0.125 ρh²/μ is then still near the sound-speed step): does the end state depend
-            // on the viscosity lowered from 9.35 Pa·s? Twice as long: its spreading time
-            // μR/σ is 84 ms, the run's end then about five of them
-            let mut viscous = two_liquids(&LiquidProps {
-                viscosity_pa_s: VISCOUS_OIL_MU,
+            // the same with the oil at the lowered viscosity earlier versions used: does the
+            // end state depend on the viscosity?
+            let mut low = two_liquids(&LiquidProps {
+                viscosity_pa_s: LOW_OIL_MU,
                 ..OIL
             });
-            viscous.time.end = 2.0 * end(f);
+            low.time.end = LOW_RUN_END_S;
             runs.push(RunSpec {
-                id: VISCOUS_RUN.into(),
-                scene: viscous,
+                id: LOW_RUN.into(),
+                scene: low,
                 snapshot_times_s: vec![],
             });
             // Eq. 23's ingredients in the same setting: each liquid alone on the Teflon
@@ -299,12 +301,12 @@ pub struct Final<'r> {
     /// The tensions the relaxed particle liquids have in the run's setting (periodic slabs),
     /// where they are measured (not at smoke fidelity), or why they could not be.
     pub slabs: Option<Result<SlabTensions, String>>,
-    /// The run with the more viscous oil, measured the same way, where it exists.
-    pub viscous: Option<ViscousEnd<'r>>,
+    /// The run with the oil at [`LOW_OIL_MU`], measured the same way, where it exists.
+    pub low: Option<LowViscosityEnd<'r>>,
 }
 
-/// The end state of the run with the oil at [`VISCOUS_OIL_MU`].
-pub struct ViscousEnd<'r> {
+/// The end state of the run with the oil at [`LOW_OIL_MU`].
+pub struct LowViscosityEnd<'r> {
     /// The run.
     pub run: &'r RunData,
     /// θ12 at the line [deg], or why it could not be measured.
@@ -402,10 +404,10 @@ impl Analysis for WaterOilTeflon {
                 .then(|| geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0)),
             oil_angle_deg: geometry::sessile_contact_angle(&cloud, &classes, 1, 0.0),
             water_share: water_share(&cloud),
-            viscous: runs.iter().find(|r| r.id == VISCOUS_RUN).map(|r| {
+            low: runs.iter().find(|r| r.id == LOW_RUN).map(|r| {
                 let cloud = r.last.cloud(l0(f));
                 let classes = surface::classify(&cloud);
-                ViscousEnd {
+                LowViscosityEnd {
                     run: r,
                     theta12_deg: geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0),
                     oil_angle_deg: geometry::sessile_contact_angle(&cloud, &classes, 1, 0.0),
@@ -468,12 +470,12 @@ impl Analysis for WaterOilTeflon {
                 .against_if(THETA_O, tol),
         );
         metrics.extend(ingredients(self.name(), m, r_over_l0));
-        if let Some(v) = &m.viscous {
-            let beside = |what: &str, r: &Result<f64, String>, at_low: f64| {
-                Metric::new(self.name(), format!("{what} at oil μ = {VISCOUS_OIL_MU} Pa·s"), "deg", value(r))
+        if let Some(v) = &m.low {
+            let beside = |what: &str, r: &Result<f64, String>, at_real: f64| {
+                Metric::new(self.name(), format!("{what} at oil μ = {LOW_OIL_MU} Pa·s"), "deg", value(r))
                     .run(v.run)
                     .note(match r {
-                        Ok(_) => format!("{}the same scene with the oil 20 times more viscous, run twice as long; at {OIL_MU} Pa·s: {at_low:.1}°", v.run.status_note()),
+                        Ok(_) => format!("{}the same scene with the oil at {LOW_OIL_MU} Pa·s for {LOW_RUN_END_S} s; at {OIL_MU} Pa·s: {at_real:.1}°", v.run.status_note()),
                         Err(e) => format!("{}not measurable: {e}", v.run.status_note()),
                     })
             };
@@ -490,7 +492,7 @@ impl Analysis for WaterOilTeflon {
             metrics.push(
                 Metric::new(
                     self.name(),
-                    format!("water share of the wetted plate at oil μ = {VISCOUS_OIL_MU} Pa·s"),
+                    format!("water share of the wetted plate at oil μ = {LOW_OIL_MU} Pa·s"),
                     "-",
                     v.water_share,
                 )

@@ -143,6 +143,13 @@ impl SceneBuilder {
         self
     }
 
+    /// The laminar viscosity integrated implicitly (backward Euler, the solver's default
+    /// stopping rule): no viscous step limit, for very viscous liquids.
+    pub fn implicit_viscosity(mut self) -> Self {
+        self.scene.effects.implicit_viscosity = Some(Default::default());
+        self
+    }
+
     /// The pairwise potential (surface and interfacial tension) on or off.
     pub fn interfacial_tension(mut self, on: bool) -> Self {
         self.scene.effects.interfacial_tension = on;

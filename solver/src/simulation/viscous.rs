@@ -4,9 +4,11 @@
 use super::Simulation;
 use crate::error::SimError;
 use crate::kernel::Kernel;
+use crate::model::Model;
+use crate::neighbours::NeighbourLists;
 use crate::physics::forces::ledger::{channel, Ledger};
 use crate::physics::implicit_viscosity::{ViscousInput, ViscousOperator};
-use crate::state::Vec3;
+use crate::state::{Particles, Vec3};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
@@ -33,7 +35,36 @@ pub(super) struct ViscousScratch {
     built_vol: Vec<f64>,
 }
 
+/// What the viscous operator reads of a state.
+fn viscous_input<'a>(
+    m: &'a Model,
+    p: &'a Particles,
+    lists: &'a NeighbourLists,
+) -> ViscousInput<'a> {
+    ViscousInput {
+        pos: &p.pos,
+        vol: &p.vol,
+        phase: &p.phase,
+        mass: &m.mass,
+        mu_pair: &m.mu_pair,
+        n_phases: m.pairs.n_phases,
+        n_fluid: p.n_fluid,
+        lists,
+    }
+}
+
 impl Simulation {
+    /// The viscous operator of the current state (for tests and diagnostics; the step keeps
+    /// its own).
+    pub fn viscous_operator<K: Kernel>(&self) -> ViscousOperator {
+        let mut op = ViscousOperator::default();
+        op.build(
+            &self.model.kernel_of::<K>(),
+            &viscous_input(&self.model, &self.particles, &self.search.lists),
+        );
+        op
+    }
+
     /// The half kick `u → u'` of `tau_s` [s] with implicit viscosity:
     /// `(M/τ + K) u' = (M/τ)(u + τ a)` at the current positions, `a` the other forces'
     /// accelerations. The explicit terms' work is booked as in the explicit kick; the viscous
@@ -58,16 +89,7 @@ impl Simulation {
             s.built_vol.extend_from_slice(&p.vol[..nf]);
             s.op.build(
                 &m.kernel_of::<K>(),
-                &ViscousInput {
-                    pos: &p.pos,
-                    vol: &p.vol,
-                    phase: &p.phase,
-                    mass: &m.mass,
-                    mu_pair: &m.mu_pair,
-                    n_phases: m.pairs.n_phases,
-                    n_fluid: nf,
-                    lists: &self.search.lists,
-                },
+                &viscous_input(m, p, &self.search.lists),
             );
         }
         s.before.clear();

@@ -8,7 +8,7 @@ use super::common::{advance, block_scene, sim};
 use super::energy_budget::{closure, cube, SUMMATION_CLIP};
 use solver::kernel::WendlandC2;
 use solver::physics::forces::{fluid_forces, Off};
-use solver::physics::implicit_viscosity::{dot, ViscousInput, ViscousOperator};
+use solver::physics::implicit_viscosity::{dot, ViscousOperator};
 use solver::state::Vec3;
 use solver::Simulation;
 
@@ -41,22 +41,16 @@ fn disordered(implicit: bool) -> Simulation {
 }
 
 fn operator(s: &Simulation) -> ViscousOperator {
-    let (m, p) = (&s.model, &s.particles);
-    let mut op = ViscousOperator::default();
-    op.build(
-        &m.kernel_of::<WendlandC2>(),
-        &ViscousInput {
-            pos: &p.pos,
-            vol: &p.vol,
-            phase: &p.phase,
-            mass: &m.mass,
-            mu_pair: &m.mu_pair,
-            n_phases: m.pairs.n_phases,
-            n_fluid: p.n_fluid,
-            lists: &s.search.lists,
-        },
-    );
-    op
+    s.viscous_operator::<WendlandC2>()
+}
+
+/// `f` run in a pool of `threads` threads.
+fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
 }
 
 fn masses(s: &Simulation) -> Vec<f64> {
@@ -158,11 +152,7 @@ fn the_solve_is_the_same_for_any_thread_count() {
     let nf = s.particles.n_fluid;
     let dt = 20.0 * explicit_limit_s(&s);
     let run = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap();
-        pool.install(|| {
+        in_pool(threads, || {
             let mut v = s.particles.vel[..nf].to_vec();
             operator(&s).solve(&mut v, dt, 1e-10, 500);
             v.iter()
@@ -220,11 +210,7 @@ fn an_implicit_run_is_the_same_for_any_thread_count_and_resumes_bitwise() {
             .collect()
     };
     let run = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap();
-        pool.install(|| {
+        in_pool(threads, || {
             let mut s = sim(&text);
             advance(&mut s, 40);
             let saved = s.checkpoint();

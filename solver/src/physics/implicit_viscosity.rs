@@ -17,11 +17,11 @@
 
 use crate::kernel::Kernel;
 use crate::neighbours::NeighbourLists;
+/// Particles per block of the inner products: the pair loop's fixed blocks (the sums do not
+/// depend on threads).
+pub use crate::physics::forces::fused::BLOCK;
 use crate::state::Vec3;
 use rayon::prelude::*;
-
-/// Particles per block of the inner products (fixed: the sums do not depend on threads).
-const BLOCK: usize = 256;
 
 /// The coefficients `c_ij` of one set of positions, row by row.
 #[derive(Clone, Debug, Default)]

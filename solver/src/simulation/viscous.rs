@@ -7,7 +7,7 @@ use crate::kernel::Kernel;
 use crate::model::Model;
 use crate::neighbours::NeighbourLists;
 use crate::physics::forces::ledger::{channel, Ledger};
-use crate::physics::implicit_viscosity::{ViscousInput, ViscousOperator};
+use crate::physics::implicit_viscosity::{ViscousInput, ViscousOperator, BLOCK};
 use crate::state::{Particles, Vec3};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -106,9 +106,9 @@ impl Simulation {
             iv.max_iterations,
         );
         let mass = s.op.mass();
-        let work: f64 = (p.vel[..nf].par_chunks(256))
-            .zip(s.before.par_chunks(256))
-            .zip(p.acc.par_chunks(256).zip(mass.par_chunks(256)))
+        let work: f64 = (p.vel[..nf].par_chunks(BLOCK))
+            .zip(s.before.par_chunks(BLOCK))
+            .zip(p.acc.par_chunks(BLOCK).zip(mass.par_chunks(BLOCK)))
             .map(|((v, u), (a, m))| {
                 (v.iter().zip(u).zip(a.iter().zip(m)))
                     .map(|((v, u), (a, m))| m * (v - u - a * tau_s).dot(&((u + v) * 0.5)))

@@ -253,12 +253,25 @@ fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
         ),
         Some(Ok(s)) => {
             let typed = [WATER.surface_tension_n_m, OIL.surface_tension_n_m, SIGMA_WO];
+            let stats = s.mean_and_spread();
+            let thicknesses = s
+                .members
+                .iter()
+                .map(|m| format!("{:.0}", m.thickness_over_l0))
+                .collect::<Vec<_>>()
+                .join(", ");
             for (k, name) in ["σ water", "σ oil", "σ water–oil"].into_iter().enumerate() {
+                let (mean, sd) = stats[k];
+                let largest_se = s
+                    .members
+                    .iter()
+                    .map(|m| m.standard_error_n_m[k])
+                    .fold(0.0, f64::max);
                 out.push(
-                    Metric::new(case, format!("{name} from a slab"), "N/m", s.measured_n_m[k]).note(format!(
-                        "relaxed periodic slab in the run's setting, pair-force virial (± {:.1e} N/m, 1 s.e.); {:.3} × the typed {} N/m; slabs.json, relaxed by {} in {:.0} s",
-                        s.standard_error_n_m[k],
-                        s.measured_n_m[k] / typed[k],
+                    Metric::new(case, format!("{name} from a slab"), "N/m", mean).note(format!(
+                        "mean of {} relaxed periodic slabs ({thicknesses} l0 thick) in the run's setting, pair-force virial: ± {sd:.1e} N/m between the slabs (sample s.d.), ± {largest_se:.1e} at most within one (time average's s.e.); {:.3} × the typed {} N/m; slabs.json, relaxed by {} in {:.0} s",
+                        s.members.len(),
+                        mean / typed[k],
                         typed[k],
                         s.git_revision,
                         s.wall_s
@@ -266,18 +279,38 @@ fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
                 );
             }
             if measured.iter().all(|v| v.is_finite()) {
-                let [sw, so, swo] = s.measured_n_m;
-                let (value, words) =
-                    match eq23::solid_contact(sw, so, swo, measured[0], measured[1]) {
-                        Ok(SolidContact::TripleLine { theta12_deg }) => {
-                            (theta12_deg, "a line".to_string())
+                // Eq. 23 at each slab's tensions: the spread of θ12 the slabs' spread carries
+                let mut words = Vec::new();
+                let theta: Vec<f64> = s
+                    .members
+                    .iter()
+                    .map(|m| {
+                        let [sw, so, swo] = m.measured_n_m;
+                        match eq23::solid_contact(sw, so, swo, measured[0], measured[1]) {
+                            Ok(SolidContact::TripleLine { theta12_deg }) => theta12_deg,
+                            Ok(c) => {
+                                words.push(format!(
+                                    "no line at {:.0} l0 ({c:?})",
+                                    m.thickness_over_l0
+                                ));
+                                c.theta12_deg()
+                            }
+                            Err(e) => {
+                                words.push(e);
+                                f64::NAN
+                            }
                         }
-                        Ok(c) => (c.theta12_deg(), format!("no line ({c:?})")),
-                        Err(e) => (f64::NAN, e),
-                    };
+                    })
+                    .collect();
+                let (value, sd) = mean_and_sd(&theta);
+                let words = if words.is_empty() {
+                    "a line at every slab".to_string()
+                } else {
+                    words.join("; ")
+                };
                 out.push(
                     Metric::new(case, "θ12 of Eq. 23 at the measured angles and slab tensions", "deg", value)
-                        .note(format!("Eq. 23 with every ingredient measured in this setting (θ's alone on the Teflon, σ's from slabs): {words}; beside the θ12 measured directly")),
+                        .note(format!("Eq. 23 with every ingredient measured in this setting (θ's alone on the Teflon, σ's of each slab): mean over the slabs, ± {sd:.1}° between them (sample s.d.); {words}; beside the θ12 measured directly")),
                 );
             }
         }
@@ -371,22 +404,62 @@ fn water_share(cloud: &surface::Cloud) -> f64 {
         .unwrap_or(f64::NAN)
 }
 
+/// The slab thicknesses of the ensemble [l0]: the design's 40 and one either side. A relaxed
+/// slab's tension depends on the state it settles into beyond its time average's standard
+/// error (measured: σ_water–oil 68.2 → 77.7 mN/m between two revisions that differ only in
+/// round-off, against ±0.17 mN/m quoted); slabs that differ slightly measure that spread.
+/// Thickness itself moves σ by < 0.5 % between 40 and 60 l0 ([`SlabDesign`]).
+const SLAB_THICKNESSES_OVER_L0: [f64; 3] = [38.0, 40.0, 42.0];
+
 /// σ_water, σ_oil and σ_water–oil as relaxed periodic slabs in the run's own setting have them
-/// [N/m] (the pair-force virial; the pair's slab less the two liquids' measured free surfaces).
-/// Kept in the case's folder as `slabs.json` with the scene and the revision that relaxed them,
-/// and reused while the run's scene is the same (the three slabs take minutes).
+/// [N/m] (the pair-force virial; the pair's slab less the two liquids' measured free surfaces),
+/// each over an ensemble of slabs of [`SLAB_THICKNESSES_OVER_L0`]. Kept in the case's folder as
+/// `slabs.json` with the scene and the revision that relaxed them, and reused while the run's
+/// scene is the same (the nine slabs take tens of minutes).
 #[derive(Serialize, Deserialize)]
 pub struct SlabTensions {
     /// The revision of the binary that relaxed them.
     pub git_revision: String,
     /// The scene whose setting they were relaxed in (the two-liquid run's).
     pub scene: solver::Scene,
+    /// The ensemble's members, one per thickness.
+    pub members: Vec<SlabMember>,
+    /// Wall time of all the slabs [s].
+    pub wall_s: f64,
+}
+
+/// One member of the slab ensemble.
+#[derive(Serialize, Deserialize)]
+pub struct SlabMember {
+    /// Each slab's thickness over l0 [-].
+    pub thickness_over_l0: f64,
     /// Measured `[σ_w, σ_o, σ_wo]` [N/m].
     pub measured_n_m: [f64; 3],
     /// Their standard errors of the time average [N/m].
     pub standard_error_n_m: [f64; 3],
-    /// Wall time of the three slabs [s].
-    pub wall_s: f64,
+}
+
+impl SlabTensions {
+    /// Mean and sample standard deviation over the members of `[σ_w, σ_o, σ_wo]` [N/m].
+    pub fn mean_and_spread(&self) -> [(f64, f64); 3] {
+        std::array::from_fn(|k| {
+            mean_and_sd(
+                &self
+                    .members
+                    .iter()
+                    .map(|m| m.measured_n_m[k])
+                    .collect::<Vec<_>>(),
+            )
+        })
+    }
+}
+
+/// Mean and sample standard deviation (n − 1) of `x` (NaN spread for fewer than two values).
+fn mean_and_sd(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (mean, if x.len() > 1 { var.sqrt() } else { f64::NAN })
 }
 
 /// The slabs of `scene` (water = liquid 0, oil = liquid 1): read from `file` if it holds this
@@ -405,24 +478,34 @@ fn slab_tensions(scene: &solver::Scene, file: &Path) -> Result<SlabTensions, Str
     Ok(s)
 }
 
-/// Relaxes the three slabs of `scene`.
+/// Relaxes the slab ensemble of `scene`.
 fn relax_slabs(scene: &solver::Scene) -> Result<SlabTensions, String> {
     let t0 = std::time::Instant::now();
-    let design = SlabDesign::default();
     let e = |e: solver::SimError| e.to_string();
-    let w = slab_tension(scene, 0, design, 1.0).map_err(e)?;
-    let o = slab_tension(scene, 1, design, 1.0).map_err(e)?;
-    let free = [w.sigma_measured_n_m, o.sigma_measured_n_m];
-    let wo = pair_slab_tension(scene, (0, 1), design, [1.0; 2], 1.0, free).map_err(e)?;
+    let mut members = Vec::new();
+    for thickness_over_l0 in SLAB_THICKNESSES_OVER_L0 {
+        let design = SlabDesign {
+            thickness_over_l0,
+            ..SlabDesign::default()
+        };
+        let w = slab_tension(scene, 0, design, 1.0).map_err(e)?;
+        let o = slab_tension(scene, 1, design, 1.0).map_err(e)?;
+        let free = [w.sigma_measured_n_m, o.sigma_measured_n_m];
+        let wo = pair_slab_tension(scene, (0, 1), design, [1.0; 2], 1.0, free).map_err(e)?;
+        members.push(SlabMember {
+            thickness_over_l0,
+            measured_n_m: [free[0], free[1], wo.sigma_measured_n_m],
+            standard_error_n_m: [
+                w.sigma_standard_error_n_m,
+                o.sigma_standard_error_n_m,
+                wo.sigma_standard_error_n_m,
+            ],
+        });
+    }
     Ok(SlabTensions {
         git_revision: env!("GIT_REVISION").to_string(),
         scene: scene.clone(),
-        measured_n_m: [free[0], free[1], wo.sigma_measured_n_m],
-        standard_error_n_m: [
-            w.sigma_standard_error_n_m,
-            o.sigma_standard_error_n_m,
-            wo.sigma_standard_error_n_m,
-        ],
+        members,
         wall_s: t0.elapsed().as_secs_f64(),
     })
 }
@@ -589,7 +672,15 @@ impl Analysis for WaterOilTeflon {
 
 #[cfg(test)]
 mod tests {
-    use super::late_share;
+    use super::{late_share, mean_and_sd};
+
+    #[test]
+    fn mean_and_sample_sd() {
+        let (m, sd) = mean_and_sd(&[1.0, 2.0, 3.0]);
+        assert_eq!(m, 2.0);
+        assert!((sd - 1.0).abs() < 1e-15);
+        assert!(mean_and_sd(&[4.0]).1.is_nan());
+    }
 
     #[test]
     fn late_share_is_zero_when_settled_and_a_fifth_when_steady() {

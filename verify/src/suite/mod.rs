@@ -26,8 +26,8 @@ use std::path::{Path, PathBuf};
 pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
-    /// The default of `verify all`: resolves the physics, the whole suite in about two hours on
-    /// 2 cores.
+    /// The default of `verify all`: resolves the physics; the whole suite takes about ten hours
+    /// on 2 cores (measured: 4.5 h, and water–oil–Teflon at the oil's real viscosity ~5 h).
     Standard,
     /// The papers' particle counts and time steps.
     Paper,

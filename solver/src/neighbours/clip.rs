@@ -12,6 +12,14 @@ use super::{REACH, ROWS};
 use crate::state::Vec3;
 use std::ops::Range;
 
+/// The fewest particles per occupied cell at which clipping pays: the cells' boundaries are
+/// found once per cell by a walk over all its neighbourhood's candidates, the window once per
+/// particle; with few particles per cell the scan of whole rows is cheaper. Measured on the
+/// 20 k cube (search time, clipped against whole rows, interleaved): r_e = 2.1 l0 (~1.5 per
+/// cell) 7.0 → 4.1 s without clipping; 3.1 l0 (~4.5) 3.6–3.9 → 3.5–3.8 s; 4.2 l0 (~10.6)
+/// 4.3–4.7 s clipped against 4.9–5.2 s without (`reports/performance.md`).
+pub(super) const MIN_PARTICLES_PER_CELL: usize = 7;
+
 /// Cells in a row of a neighbourhood.
 const CELLS: usize = (2 * REACH + 1) as usize;
 

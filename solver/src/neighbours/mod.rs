@@ -152,6 +152,9 @@ pub struct NeighbourSearch {
     wall_table: CellTable,
     /// Whether dense tables may be used (tests switch them off to compare with galloping).
     dense_tables: bool,
+    /// The fewest particles per occupied cell at which the scan's rows are clipped to the
+    /// cells within reach ([`clip::MIN_PARTICLES_PER_CELL`]; tests set it to force either way).
+    clip_min_per_cell: usize,
     /// Per fluid particle: bit `k` says whether the `k`-th entry of `lists.near(i)` interacts at
     /// the current positions (within the kernel support or `r_e`; `k < 64`, later entries are
     /// always visited). A build sets every bit; the summation density narrows them at the positions
@@ -188,6 +191,7 @@ impl NeighbourSearch {
             fluid_table: CellTable::default(),
             wall_table: CellTable::default(),
             dense_tables: true,
+            clip_min_per_cell: clip::MIN_PARTICLES_PER_CELL,
             active: Vec::new(),
             builds: 0,
         }
@@ -262,6 +266,10 @@ impl NeighbourSearch {
         let (ft, wt) = (&self.fluid_table, &self.wall_table);
         let fluid_runs = runs_of(fk);
         let wall_runs = runs_of(wk);
+        // clip the rows to the cells within reach only where cells hold enough particles to pay
+        // for finding the cells' boundaries (the same lists either way)
+        let clip_fluid = n_fluid >= self.clip_min_per_cell * fluid_runs.len();
+        let clip_walls = wk.len() >= self.clip_min_per_cell * wall_runs.len();
         const RUNS_PER_SEGMENT: usize = 16;
         let n_fluid_seg = fluid_runs.len().div_ceil(RUNS_PER_SEGMENT);
         let n_seg = n_fluid_seg + wall_runs.len().div_ceil(RUNS_PER_SEGMENT);
@@ -304,14 +312,20 @@ impl NeighbourSearch {
                         near_buf.resize(candidates, 0);
                         far_buf.resize(candidates, 0);
                     }
-                    let (f_cells, w_cells) = (
-                        RowCells::new(fk, fk[s], &f_ranges),
-                        RowCells::new(wk, fk[s], &w_ranges),
-                    );
+                    let cells = clip_fluid.then(|| {
+                        (
+                            RowCells::new(fk, fk[s], &f_ranges),
+                            RowCells::new(wk, fk[s], &w_ranges),
+                        )
+                    });
                     for i in s..e {
-                        let reach = clip::window(&pos[i], inv_cell, far_cut);
-                        let (f_ranges, w_ranges) =
-                            (f_cells.clipped(&reach), w_cells.clipped(&reach));
+                        let (f_ranges, w_ranges) = match &cells {
+                            Some((f_cells, w_cells)) => {
+                                let reach = clip::window(&pos[i], inv_cell, far_cut);
+                                (f_cells.clipped(&reach), w_cells.clipped(&reach))
+                            }
+                            None => (f_ranges.clone(), w_ranges.clone()),
+                        };
                         let (nn, nf) = scan_fluid(
                             pos,
                             i,
@@ -342,10 +356,15 @@ impl NeighbourSearch {
                     if buf.len() < candidates {
                         buf.resize(candidates, 0);
                     }
-                    let f_cells = RowCells::new(fk, wk[s], &f_ranges);
+                    let f_cells = clip_walls.then(|| RowCells::new(fk, wk[s], &f_ranges));
                     for iw in s..e {
-                        let reach = clip::window(&pos[n_fluid + iw], inv_cell, near_cut);
-                        let f_ranges = f_cells.clipped(&reach);
+                        let f_ranges = match &f_cells {
+                            Some(f_cells) => {
+                                let reach = clip::window(&pos[n_fluid + iw], inv_cell, near_cut);
+                                f_cells.clipped(&reach)
+                            }
+                            None => f_ranges.clone(),
+                        };
                         let (n, _) = scan::<false>(
                             pos,
                             n_fluid + iw,

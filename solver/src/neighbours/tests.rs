@@ -160,6 +160,34 @@ fn dense_tables_and_galloping_give_identical_lists() {
 }
 
 #[test]
+fn clipped_and_whole_rows_give_identical_lists() {
+    // clipping the rows to the cells within reach only skips candidates beyond the cut-off:
+    // the lists must be the same entry for entry whichever way a scene's density selects
+    let (fluid, walls) = (
+        random_points(900, 1e-3, -3e-4, 13),
+        random_points(500, 1e-3, 2e-4, 14),
+    );
+    let lists = |min_per_cell: usize| {
+        let mut s = NeighbourSearch::new(1.0e-4, 2.0e-4, 1e-5);
+        s.clip_min_per_cell = min_per_cell;
+        let perm = s.sort_order(&fluid).unwrap();
+        let mut pos: Vec<Vec3> = perm.iter().map(|&i| fluid[i as usize]).collect();
+        let permw = s.sort_order(&walls).unwrap();
+        pos.extend(permw.iter().map(|&i| walls[i as usize]));
+        s.build(&pos, fluid.len()).unwrap();
+        (0..pos.len())
+            .map(|i| {
+                let near: Vec<usize> = s.lists.near(i).collect();
+                (near, s.lists.all(i).collect::<Vec<_>>())
+            })
+            .collect::<Vec<_>>()
+    };
+    let clipped = lists(0);
+    assert_eq!(clipped, lists(usize::MAX));
+    assert!(clipped.iter().map(|l| l.1.len()).sum::<usize>() > 10_000);
+}
+
+#[test]
 fn keys_order_rows_along_x() {
     let inv = 1.0 / 1e-4;
     let a = cell_key(&Vec3::new(0.5e-4, 0.0, 0.0), inv).unwrap();

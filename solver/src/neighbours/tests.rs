@@ -129,30 +129,50 @@ fn periodic_search_returns_exactly_the_minimum_image_pairs() {
     check_in(all, 500, 100, (1.0e-4, 4.0e-4, 1e-5), 8);
 }
 
+/// `n_fluid` random fluid points in a 1 mm box from −0.3 mm and `n_walls` wall points from
+/// 0.2 mm (seeds `seed` and `seed + 1`).
+fn fluid_and_walls(n_fluid: usize, n_walls: usize, seed: u64) -> (Vec<Vec3>, Vec<Vec3>) {
+    (
+        random_points(n_fluid, 1e-3, -3e-4, seed),
+        random_points(n_walls, 1e-3, 2e-4, seed + 1),
+    )
+}
+
+/// Every particle's (near, all) lists.
+type AllLists = Vec<(Vec<usize>, Vec<usize>)>;
+
+/// Every particle's (near, all) lists of `fluid` and `walls` (sorted by cell first) for a
+/// search with cut-offs 0.1/0.2 mm and a 10 µm skin, after `configure`; and the search.
+fn lists_of(
+    fluid: &[Vec3],
+    walls: &[Vec3],
+    configure: impl Fn(&mut NeighbourSearch),
+) -> (AllLists, NeighbourSearch) {
+    let mut s = NeighbourSearch::new(1.0e-4, 2.0e-4, 1e-5);
+    configure(&mut s);
+    let perm = s.sort_order(fluid).unwrap();
+    let mut pos: Vec<Vec3> = perm.iter().map(|&i| fluid[i as usize]).collect();
+    let permw = s.sort_order(walls).unwrap();
+    pos.extend(permw.iter().map(|&i| walls[i as usize]));
+    s.build(&pos, fluid.len()).unwrap();
+    let lists = (0..pos.len())
+        .map(|i| (s.lists.near(i).collect(), s.lists.all(i).collect()))
+        .collect();
+    (lists, s)
+}
+
 #[test]
 fn dense_tables_and_galloping_give_identical_lists() {
     // the two ways of finding a cell's rows must agree entry for entry (same order: the
     // results of a run must not depend on which one a scene's extent selects)
-    let (fluid, walls) = (
-        random_points(700, 1e-3, -3e-4, 11),
-        random_points(400, 1e-3, 2e-4, 12),
-    );
+    let (fluid, walls) = fluid_and_walls(700, 400, 11);
     let lists = |dense: bool| {
-        let mut s = NeighbourSearch::new(1.0e-4, 2.0e-4, 1e-5);
-        s.dense_tables = dense;
-        let perm = s.sort_order(&fluid).unwrap();
-        let mut pos: Vec<Vec3> = perm.iter().map(|&i| fluid[i as usize]).collect();
-        let permw = s.sort_order(&walls).unwrap();
-        pos.extend(permw.iter().map(|&i| walls[i as usize]));
-        s.build(&pos, fluid.len()).unwrap();
+        let (lists, s) = lists_of(&fluid, &walls, |s| {
+            s.dense_tables = dense;
+        });
         assert_eq!(s.fluid_table.is_built(), dense);
         assert_eq!(s.wall_table.is_built(), dense);
-        (0..pos.len())
-            .map(|i| {
-                let near: Vec<usize> = s.lists.near(i).collect();
-                (near, s.lists.all(i).collect::<Vec<_>>())
-            })
-            .collect::<Vec<_>>()
+        lists
     };
     let dense = lists(true);
     assert_eq!(dense, lists(false));
@@ -163,24 +183,12 @@ fn dense_tables_and_galloping_give_identical_lists() {
 fn clipped_and_whole_rows_give_identical_lists() {
     // clipping the rows to the cells within reach only skips candidates beyond the cut-off:
     // the lists must be the same entry for entry whichever way a scene's density selects
-    let (fluid, walls) = (
-        random_points(900, 1e-3, -3e-4, 13),
-        random_points(500, 1e-3, 2e-4, 14),
-    );
+    let (fluid, walls) = fluid_and_walls(900, 500, 13);
     let lists = |min_per_cell: usize| {
-        let mut s = NeighbourSearch::new(1.0e-4, 2.0e-4, 1e-5);
-        s.clip_min_per_cell = min_per_cell;
-        let perm = s.sort_order(&fluid).unwrap();
-        let mut pos: Vec<Vec3> = perm.iter().map(|&i| fluid[i as usize]).collect();
-        let permw = s.sort_order(&walls).unwrap();
-        pos.extend(permw.iter().map(|&i| walls[i as usize]));
-        s.build(&pos, fluid.len()).unwrap();
-        (0..pos.len())
-            .map(|i| {
-                let near: Vec<usize> = s.lists.near(i).collect();
-                (near, s.lists.all(i).collect::<Vec<_>>())
-            })
-            .collect::<Vec<_>>()
+        lists_of(&fluid, &walls, |s| {
+            s.clip_min_per_cell = min_per_cell;
+        })
+        .0
     };
     let clipped = lists(0);
     assert_eq!(clipped, lists(usize::MAX));

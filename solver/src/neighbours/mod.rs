@@ -268,8 +268,8 @@ impl NeighbourSearch {
         let wall_runs = runs_of(wk);
         // clip the rows to the cells within reach only where cells hold enough particles to pay
         // for finding the cells' boundaries (the same lists either way)
-        let clip_fluid = n_fluid >= self.clip_min_per_cell * fluid_runs.len();
-        let clip_walls = wk.len() >= self.clip_min_per_cell * wall_runs.len();
+        let clip_fluid = n_fluid >= self.clip_min_per_cell.saturating_mul(fluid_runs.len());
+        let clip_walls = wk.len() >= self.clip_min_per_cell.saturating_mul(wall_runs.len());
         const RUNS_PER_SEGMENT: usize = 16;
         let n_fluid_seg = fluid_runs.len().div_ceil(RUNS_PER_SEGMENT);
         let n_seg = n_fluid_seg + wall_runs.len().div_ceil(RUNS_PER_SEGMENT);

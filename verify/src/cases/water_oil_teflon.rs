@@ -673,10 +673,10 @@ impl Analysis for WaterOilTeflon {
         plot::draw_particles(
             &ParticleView {
                 title: format!(
-                    "Water and oil on Teflon at t = {:.2} s (vertical slice ±l0 through both centroids, from water to oil)",
+                    "Water and oil on Teflon at t = {:.2} s, through both centroids",
                     last.time_s
                 ),
-                x_label: "along the slice from between the centroids [mm]".into(),
+                x_label: "from between the centroids towards the oil, slice ±l0 [mm]".into(),
                 y_label: "z [mm]".into(),
                 points: views::vertical_slice(last, mid, along, l0(f), 8e-3, 2),
                 categories: categories.clone(),

@@ -46,15 +46,28 @@ impl<'a> Ids<'a> {
 
     /// Decodes the rest of the list into `out` (cleared first).
     #[inline]
-    pub fn decode_into(self, out: &mut Vec<u32>) {
+    pub fn decode_into(mut self, out: &mut Vec<u32>) {
         out.clear();
-        out.extend(self.map(|j| j as u32));
+        let words = self.words.as_slice();
+        if all_short(words) {
+            out.resize(words.len(), 0);
+            self.prev = prefix_sums(self.prev, words, out);
+        } else {
+            out.extend(self.map(|j| j as u32));
+        }
     }
 
     /// Decodes the next entries into `out`, as many as fit; returns how many were written
     /// (fewer than `out.len()` only at the end of the list).
     #[inline(always)]
     pub fn fill(&mut self, out: &mut [u32]) -> usize {
+        let words = self.words.as_slice();
+        let m = out.len().min(words.len());
+        if all_short(&words[..m]) {
+            self.prev = prefix_sums(self.prev, &words[..m], &mut out[..m]);
+            self.words = words[m..].iter();
+            return m;
+        }
         let mut n = 0;
         while n < out.len() {
             match self.next() {
@@ -96,6 +109,24 @@ impl Iterator for Ids<'_> {
     }
 }
 
+/// Whether no word of `words` is an escape: each is a difference (branch-free, vectorised: most
+/// lists have no escape, and they then decode without a test per entry).
+#[inline(always)]
+fn all_short(words: &[u16]) -> bool {
+    !words.iter().fold(false, |any, &w| any | (w == ESCAPE))
+}
+
+/// Writes into `out` the running sums of the differences `words` (no escapes) from `prev`;
+/// returns the last index (`prev` for none).
+#[inline(always)]
+fn prefix_sums(mut prev: u32, words: &[u16], out: &mut [u32]) -> u32 {
+    for (o, &w) in out.iter_mut().zip(words) {
+        prev = prev.wrapping_add(w as i16 as i32 as u32);
+        *o = prev;
+    }
+    prev
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -135,5 +166,39 @@ mod tests {
         encode(&mut words, 0, &[32_768]);
         assert_eq!(words.len(), 4 + 3);
         assert!(Ids::new(&[], 5).is_empty() && Ids::new(&[], 5).next().is_none());
+    }
+
+    #[test]
+    fn decoding_in_bulk_gives_the_entries_one_by_one() {
+        // lists without escapes (the fast path) and with them at the start, middle and end,
+        // decoded whole and in pieces of every size around a chunk (an escape straddling one)
+        let short: Vec<u32> = (0..40).map(|k| 1000 + 7 * k - (k % 3) * 5).collect();
+        let mut lists = vec![short.clone(), vec![], vec![3]];
+        for at in [0, 17, 39] {
+            let mut l = short.clone();
+            l.insert(at, 900_000 + at as u32);
+            lists.push(l);
+        }
+        for ids in &lists {
+            let mut words = Vec::new();
+            encode(&mut words, 1003, ids);
+            let one_by_one: Vec<u32> = Ids::new(&words, 1003).map(|j| j as u32).collect();
+            assert_eq!(&one_by_one, ids);
+            let mut whole = vec![77];
+            Ids::new(&words, 1003).decode_into(&mut whole);
+            assert_eq!(&whole, ids);
+            for piece in [1, 2, 15, 16, 17, 64] {
+                let mut it = Ids::new(&words, 1003);
+                let (mut got, mut buf) = (Vec::new(), vec![0u32; piece]);
+                loop {
+                    let m = it.fill(&mut buf);
+                    got.extend_from_slice(&buf[..m]);
+                    if m < piece {
+                        break;
+                    }
+                }
+                assert_eq!(&got, ids, "pieces of {piece}");
+            }
+        }
     }
 }

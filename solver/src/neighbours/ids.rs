@@ -46,12 +46,12 @@ impl<'a> Ids<'a> {
 
     /// Decodes the rest of the list into `out` (cleared first).
     #[inline]
-    pub fn decode_into(mut self, out: &mut Vec<u32>) {
+    pub fn decode_into(self, out: &mut Vec<u32>) {
         out.clear();
         let words = self.words.as_slice();
         if all_short(words) {
             out.resize(words.len(), 0);
-            self.prev = prefix_sums(self.prev, words, out);
+            prefix_sums(self.prev, words, out);
         } else {
             out.extend(self.map(|j| j as u32));
         }

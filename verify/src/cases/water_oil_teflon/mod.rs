@@ -17,6 +17,8 @@
 //! may depend on the path. The oil's density is not given in the paper: 970 kg/m³ (a typical
 //! silicone oil) is assumed.
 
+mod placement;
+
 use super::analysis::{self, Analysis};
 use super::paper_values;
 use super::plate_eq23::triple_line_tolerance;
@@ -321,6 +323,50 @@ fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
     out
 }
 
+/// How far each run drifted off the plate's axis, and where the pair's liquids ended
+/// (reported, no reference: the paper's plate is open and its picture axisymmetric).
+fn placement_metrics(case: &str, m: &Final, l0_m: f64) -> Vec<Metric> {
+    let mut out = Vec::new();
+    for (r, d) in &m.drift {
+        out.push(
+            Metric::new(case, format!("centre of mass off the axis, largest, {}", r.id), "mm", d.largest_m * 1e3)
+                .run(r)
+                .note(format!(
+                    "{}the liquids' common centre of mass, horizontal distance from the plate's axis: largest at {:.2} s, {:.2} mm at the end ({:.2} s); on a particle wall sideways momentum is not conserved",
+                    r.status_note(),
+                    d.at_s,
+                    d.last_m * 1e3,
+                    r.last.time_s
+                )),
+        );
+    }
+    let e = &m.ending;
+    let edge = if e.reach_m > PLATE_RADIUS_M - 2.0 * l0_m {
+        "within 2 l0 of the plate's edge: the plate no longer stands for the paper's open one"
+    } else {
+        "short of the plate's edge by more than 2 l0"
+    };
+    out.push(
+        Metric::new(case, "oil's reach from the axis", "mm", e.reach_m * 1e3)
+            .run(m.run)
+            .note(format!(
+                "{}the oil particle farthest from the plate's axis at the end, on a plate of radius {:.1} mm: {edge}; {} liquid particle(s) below the plate's top (over its edge)",
+                m.run.status_note(),
+                PLATE_RADIUS_M * 1e3,
+                e.below_plate
+            )),
+    );
+    out.push(
+        Metric::new(case, "share of the oil above the water's top", "-", e.share_over)
+            .run(m.run)
+            .note(format!(
+                "{}oil particles higher than the water's highest particle at the end (the paper's picture: the oil covers the water)",
+                m.run.status_note()
+            )),
+    );
+    out
+}
+
 /// Eq. 23 for water and oil on Teflon.
 fn expected() -> anyhow::Result<SolidContact> {
     eq23::solid_contact(
@@ -354,6 +400,12 @@ pub struct Final<'r> {
     pub low: Option<LowViscosityEnd<'r>>,
     /// Each run of the case with [`late_release_share`] of it [-]: was its end state reached?
     pub late_release: Vec<(&'r RunData, f64)>,
+    /// Each run of the case with the drift of its centre of mass off the plate's axis, where
+    /// its time series has the columns.
+    pub drift: Vec<(&'r RunData, placement::Drift)>,
+    /// Where the pair's liquids ended: the oil's reach, what went over the plate's edge, the
+    /// oil over the water.
+    pub ending: placement::Ending,
 }
 
 /// The share of the interfacial and gravitational energy a run released that it released in
@@ -550,6 +602,20 @@ impl Analysis for WaterOilTeflon {
             }),
             alone_deg: [alone("water_alone"), alone("oil_alone")],
             late_release: runs.iter().map(|r| (r, late_release_share(r))).collect(),
+            drift: runs
+                .iter()
+                .filter_map(|r| {
+                    let liquids: Vec<&str> = r
+                        .info
+                        .scene
+                        .liquids
+                        .iter()
+                        .map(|l| l.name.as_str())
+                        .collect();
+                    placement::drift(&r.timeseries, &liquids).map(|d| (r, d))
+                })
+                .collect(),
+            ending: placement::ending(&run.last, 1, 1, 0),
             // the σ's of Eq. 23 as the particle liquids have them (relaxed once per scene)
             slabs: (f != Fidelity::Smoke).then(|| {
                 let case_dir = run.dir.parent().unwrap_or(&run.dir);
@@ -640,6 +706,7 @@ impl Analysis for WaterOilTeflon {
                 .run(run)
                 .note("Eq. 23 has a triple line (θ12 < 180°): the water touches the plate directly, no oil film under it (paper: the same)"),
         );
+        metrics.extend(placement_metrics(self.name(), m, l0(f)));
         for (r, share) in &m.late_release {
             metrics.push(
                 Metric::new(self.name(), format!("energy released in the last fifth, {}", r.id), "-", *share)

@@ -283,6 +283,21 @@ fn ingredients(case: &str, m: &Final, r_over_l0: f64) -> Vec<Metric> {
                     )),
                 );
             }
+            // whether the oil should cover the water at all: its spreading coefficient on the
+            // water, σ_w − σ_o − σ_wo (> 0: it spreads into a film over the water)
+            let spreading: Vec<f64> = s
+                .members
+                .iter()
+                .map(|m| m.measured_n_m[0] - m.measured_n_m[1] - m.measured_n_m[2])
+                .collect();
+            let (value, sd) = mean_and_sd(&spreading);
+            let typed_spreading = typed[0] - typed[1] - typed[2];
+            out.push(
+                Metric::new(case, "oil's spreading coefficient on the water, from the slabs", "N/m", value)
+                    .note(format!(
+                        "σ_w − σ_o − σ_wo of each slab, mean ± {sd:.1e} N/m (sample s.d.); typed {typed_spreading:+.1e} N/m. Positive: the oil spreads over the water (the paper's picture); negative: it stays a lens or leaves the water"
+                    )),
+            );
             if measured.iter().all(|v| v.is_finite()) {
                 // Eq. 23 at each slab's tensions: the spread of θ12 the slabs' spread carries
                 let mut words = Vec::new();

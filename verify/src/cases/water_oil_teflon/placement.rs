@@ -6,7 +6,7 @@
 //! oil reached the plate's edge (where the run stops being the paper's open plate), and whether
 //! any oil stayed over the water as in the paper's picture.
 
-use crate::output::timeseries::{Axis, LiquidColumn, Table};
+use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
 use crate::suite::dump::Dump;
 
 /// How far the liquids' common centre of mass moved off the plate's axis over a run.
@@ -24,7 +24,7 @@ pub struct Drift {
 /// the horizontal centroid of each liquid in the run's time series; `None` if the series has
 /// no rows or lacks a liquid's columns.
 pub fn drift(ts: &Table, liquids: &[&str]) -> Option<Drift> {
-    let time = ts.column("time_s")?;
+    let time = ts.run_column(RunColumn::Time);
     let columns: Vec<[Vec<f64>; 3]> = liquids
         .iter()
         .map(|l| {

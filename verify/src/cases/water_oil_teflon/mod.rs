@@ -365,10 +365,10 @@ fn placement_metrics(case: &str, m: &Final, l0_m: f64) -> Vec<Metric> {
         Metric::new(case, "oil's reach from the axis", "mm", e.reach_m * 1e3)
             .run(m.run)
             .note(format!(
-                "{}the oil particle farthest from the plate's axis at the end, on a plate of radius {:.1} mm: {edge}; {} liquid particle(s) below the plate's top (over its edge)",
+                "{}the oil particle farthest from the plate's axis at the end, on a plate of radius {:.1} mm: {edge}; {} liquid particle(s) beyond the plate's radius (over its edge)",
                 m.run.status_note(),
                 PLATE_RADIUS_M * 1e3,
-                e.below_plate
+                e.off_plate
             )),
     );
     out.push(
@@ -630,7 +630,7 @@ impl Analysis for WaterOilTeflon {
                     placement::drift(&r.timeseries, &liquids).map(|d| (r, d))
                 })
                 .collect(),
-            ending: placement::ending(&run.last, 1, 1, 0),
+            ending: placement::ending(&run.last, PLATE_RADIUS_M, 1, 1, 0),
             // the σ's of Eq. 23 as the particle liquids have them (relaxed once per scene)
             slabs: (f != Fidelity::Smoke).then(|| {
                 let case_dir = run.dir.parent().unwrap_or(&run.dir);

@@ -64,21 +64,26 @@ pub fn drift(ts: &Table, liquids: &[&str]) -> Option<Drift> {
 
 /// Where a final state's liquids lie on a plate whose top is `z = 0` and whose axis is
 /// `x = y = 0`.
+///
+/// What went over the edge is counted by the horizontal distance, not by `z < 0`: a film of
+/// oil on the Teflon sits up to ~0.15 l0 below the plate's nominal top (pressed between the
+/// wall particles' layer and the liquid above it) without leaving the plate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ending {
     /// The largest horizontal distance of a particle of the liquid `reach_phase` from the
     /// axis [m].
     pub reach_m: f64,
-    /// Liquid particles below the plate's top (gone over its edge) [-].
-    pub below_plate: usize,
+    /// Liquid particles farther from the axis than the plate's radius (gone over its edge) [-].
+    pub off_plate: usize,
     /// The share of the particles of liquid `over` that lie higher than every particle of
     /// liquid `under` [-] (0 if none does, NaN if either has no particles).
     pub share_over: f64,
 }
 
-/// The [`Ending`] of `dump`: the reach of phase `reach_phase`, and the share of phase `over`
-/// above the highest particle of phase `under`.
-pub fn ending(dump: &Dump, reach_phase: u8, over: u8, under: u8) -> Ending {
+/// The [`Ending`] of `dump` on a plate of radius `plate_radius_m` [m]: the reach of phase
+/// `reach_phase`, what went over the edge, and the share of phase `over` above the highest
+/// particle of phase `under`.
+pub fn ending(dump: &Dump, plate_radius_m: f64, reach_phase: u8, over: u8, under: u8) -> Ending {
     let liquid = || {
         dump.pos
             .iter()
@@ -90,7 +95,9 @@ pub fn ending(dump: &Dump, reach_phase: u8, over: u8, under: u8) -> Ending {
         .filter(|&(_, ph)| ph == reach_phase)
         .map(|(p, _)| p[0].hypot(p[1]))
         .fold(f64::NAN, f64::max);
-    let below_plate = liquid().filter(|(p, _)| p[2] < 0.0).count();
+    let off_plate = liquid()
+        .filter(|(p, _)| p[0].hypot(p[1]) > plate_radius_m)
+        .count();
     let top_under = liquid()
         .filter(|&(_, ph)| ph == under)
         .map(|(p, _)| p[2])
@@ -107,7 +114,7 @@ pub fn ending(dump: &Dump, reach_phase: u8, over: u8, under: u8) -> Ending {
     };
     Ending {
         reach_m,
-        below_plate,
+        off_plate,
         share_over,
     }
 }
@@ -164,18 +171,21 @@ mod tests {
                 [0.0, 3.0, 2.5],  // oil above the water's top
                 [4.0, 3.0, 1.0],  // oil, 5 from the axis
                 [0.0, -2.0, 0.5], // oil
-                [6.0, 0.0, -0.5], // water over the edge, below the plate's top
+                [6.0, 0.0, -0.5], // water over the edge (plate radius 5.5), below its top
+                [0.0, 1.0, -0.1], // water pressed below the top on the plate: not off it
                 [9.0, 9.0, -1.0], // a wall particle: ignored
             ],
-            vel: vec![[0.0; 3]; 7],
-            phase: vec![0, 0, 1, 1, 1, 0, 2],
-            wall: vec![false, false, false, false, false, false, true],
+            vel: vec![[0.0; 3]; 8],
+            phase: vec![0, 0, 1, 1, 1, 0, 0, 2],
+            wall: vec![false, false, false, false, false, false, false, true],
         };
-        let e = ending(&dump, 1, 1, 0);
+        let e = ending(&dump, 5.5, 1, 1, 0);
         assert_eq!(e.reach_m, 5.0);
-        assert_eq!(e.below_plate, 1);
+        assert_eq!(e.off_plate, 1);
         assert!((e.share_over - 1.0 / 3.0).abs() < 1e-15);
+        // a plate wide enough for every particle: nothing off it
+        assert_eq!(ending(&dump, 7.0, 1, 1, 0).off_plate, 0);
         // no particle of the phase below: no share
-        assert!(ending(&dump, 1, 1, 5).share_over.is_nan());
+        assert!(ending(&dump, 5.5, 1, 1, 5).share_over.is_nan());
     }
 }

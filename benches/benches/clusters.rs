@@ -1,25 +1,24 @@
 //! Would clusters of 4 particles against 4 pay for the pair loops? A probe, not the solver's
 //! code path: the potential's pair force (Kondo's `P'(r) = (r − l0)(r − r_e)`, Eq. (15),
-//! Natsui 2021, one unit coefficient for every pair) summed over every neighbour within `r_e`, on the seeded,
-//! perturbed 20 k cube, in two layouts with the same arithmetic per pair:
+//! Natsui 2021, one unit coefficient for every pair) summed over every neighbour within
+//! `r_e`, on the seeded, perturbed 20 k cube, by three loops:
 //!
 //! - `clusters/list/re{2.1,4.2}`: the solver's layout — each particle's own list of neighbour
 //!   indices (here plain `u32`, in index order), positions gathered through it, one particle's
 //!   sum at a time;
-//! - `clusters/cluster4/re{2.1,4.2}`: particles grouped in clusters of 4 (columns 2 l0 × 2 l0
-//!   across, sorted by height, padded with far-away dummies to a multiple of 4), one list of
-//!   neighbouring clusters per cluster (bounding boxes closer than `r_e`); each entry is 4 × 4
-//!   pairs, the cluster's 4 particles in the vector lanes and each neighbour broadcast against
-//!   them, the pairs beyond `r_e` masked.
-//!
-//! - `clusters/list_r2/re{2.1,4.2}`: the list loop with a force polynomial in `r²` (same zeros,
-//!   not the solver's force): no square root and no division per pair — what those cost.
+//! - `clusters/list_r2/re{2.1,4.2}`: the same loop with a force polynomial in `r²` (same zeros,
+//!   not the solver's force): no square root and no division per pair — what those cost;
+//! - `clusters/cluster4/re{2.1,4.2}`: the list's arithmetic, with the particles grouped in
+//!   clusters of 4 (columns 2 l0 × 2 l0 across, sorted by height, padded with far-away dummies
+//!   to a multiple of 4) and one list of neighbouring clusters per cluster (bounding boxes
+//!   closer than `r_e`); each entry is 4 × 4 pairs, the cluster's 4 particles in the vector
+//!   lanes and each neighbour broadcast against them, the pairs beyond `r_e` masked.
 //!
 //! All evaluate each pair from both sides (no scattered writes). Throughput is in pairs within
 //! `r_e` (both directions), so criterion's elements/s are useful pair evaluations per second;
 //! the cluster layout also evaluates masked pairs (its efficiency is printed at set-up). The
-//! two results are compared before timing (different summation order: within 1e-12 of the
-//! largest force).
+//! list's and the clusters' forces are compared before timing (different summation order:
+//! within 1e-12 of the largest force).
 //!
 //! Run: `cargo bench -p benches --bench clusters [-- FILTER]`.
 

@@ -180,10 +180,10 @@ fn clusters(p: &Soa, l0_m: f64, r_e_m: f64) -> Clusters {
     }
 }
 
-/// The force on every particle through its own list [N per unit coefficient].
-fn sum_lists(p: &Soa, l: &Lists, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
-    let (l0, re) = (pot.l0_m, pot.r_e_m);
-    let r_e2 = re * re;
+/// The force on every particle through its own list, with `s(r²)` the pair's force over its
+/// distance [N/m per unit coefficient] (called for every entry, masked beyond `r_e`).
+fn sum_lists(p: &Soa, l: &Lists, r_e_m: f64, s_of_r2: impl Fn(f64) -> f64, f: &mut [[f64; 3]]) {
+    let r_e2 = r_e_m * r_e_m;
     for (i, fi) in f.iter_mut().enumerate() {
         let (xi, yi, zi) = (p.x[i], p.y[i], p.z[i]);
         let mut acc = [0.0; 3];
@@ -191,8 +191,7 @@ fn sum_lists(p: &Soa, l: &Lists, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
             let j = j as usize;
             let (dx, dy, dz) = (xi - p.x[j], yi - p.y[j], zi - p.z[j]);
             let r2 = dx * dx + dy * dy + dz * dz;
-            let r = r2.sqrt();
-            let s = (r - l0) * (r - re) / r;
+            let s = s_of_r2(r2);
             let s = if r2 < r_e2 { s } else { 0.0 };
             acc[0] += s * dx;
             acc[1] += s * dy;
@@ -202,33 +201,27 @@ fn sum_lists(p: &Soa, l: &Lists, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
     }
 }
 
-/// The list loop with `P'(r)/r` replaced by `(r² − l0²)(r² − r_e²)/(r (r + l0)(r + r_e))`
-/// written without `r`: `(r² − l0²)(r² − r_e²) / (l0 + r_e)³` — the same zeros, not the same
-/// force (not the solver's physics): what the square root and the division of a pair cost.
-fn sum_lists_r2(p: &Soa, l: &Lists, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
-    let (l02, re2) = (pot.l0_m * pot.l0_m, pot.r_e_m * pot.r_e_m);
-    let scale = 1.0 / (pot.l0_m + pot.r_e_m).powi(3);
-    for (i, fi) in f.iter_mut().enumerate() {
-        let (xi, yi, zi) = (p.x[i], p.y[i], p.z[i]);
-        let mut acc = [0.0; 3];
-        for &j in &l.ids[l.start[i] as usize..l.start[i + 1] as usize] {
-            let j = j as usize;
-            let (dx, dy, dz) = (xi - p.x[j], yi - p.y[j], zi - p.z[j]);
-            let r2 = dx * dx + dy * dy + dz * dz;
-            let s = (r2 - l02) * (r2 - re2) * scale;
-            let s = if r2 < re2 { s } else { 0.0 };
-            acc[0] += s * dx;
-            acc[1] += s * dy;
-            acc[2] += s * dz;
-        }
-        *fi = acc;
+/// Kondo's `P'(r)/r = (r − l0)(r − r_e)/r` from `r²`: a square root and a division.
+fn kondo_over_r(pot: &Kondo2007Potential) -> impl Fn(f64) -> f64 {
+    let (l0, re) = (pot.l0_m, pot.r_e_m);
+    move |r2: f64| {
+        let r = r2.sqrt();
+        (r - l0) * (r - re) / r
     }
 }
 
+/// `P'(r)/r = (r² − l0²)(r² − r_e²) / (r (r + l0)(r + r_e))` with the denominator replaced by
+/// the constant `(l0 + r_e)³`: the same zeros, not the same force (not the solver's physics);
+/// no square root and no division — what those cost.
+fn polynomial_in_r2(pot: &Kondo2007Potential) -> impl Fn(f64) -> f64 {
+    let (l02, re2) = (pot.l0_m * pot.l0_m, pot.r_e_m * pot.r_e_m);
+    let scale = 1.0 / (pot.l0_m + pot.r_e_m).powi(3);
+    move |r2: f64| (r2 - l02) * (r2 - re2) * scale
+}
+
 /// The force on every slot through the cluster lists [N per unit coefficient].
-fn sum_clusters(c: &Clusters, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
-    let (l0, re) = (pot.l0_m, pot.r_e_m);
-    let r_e2 = re * re;
+fn sum_clusters(c: &Clusters, r_e_m: f64, s_of_r2: impl Fn(f64) -> f64, f: &mut [[f64; 3]]) {
+    let r_e2 = r_e_m * r_e_m;
     let p = &c.pos;
     let lanes = |v: &[f64], k: usize| -> [f64; W] { v[k..k + W].try_into().expect("W slots") };
     for (ci, fc) in f.chunks_exact_mut(W).enumerate() {
@@ -246,8 +239,7 @@ fn sum_clusters(c: &Clusters, pot: &Kondo2007Potential, f: &mut [[f64; 3]]) {
                 let dz: [f64; W] = std::array::from_fn(|a| zi[a] - zj[b]);
                 let r2: [f64; W] =
                     std::array::from_fn(|a| dx[a] * dx[a] + dy[a] * dy[a] + dz[a] * dz[a]);
-                let r: [f64; W] = std::array::from_fn(|a| r2[a].sqrt());
-                let s: [f64; W] = std::array::from_fn(|a| (r[a] - l0) * (r[a] - re) / r[a]);
+                let s: [f64; W] = std::array::from_fn(|a| s_of_r2(r2[a]));
                 // beyond r_e, and the particle itself (r = 0: s is NaN there)
                 let s: [f64; W] = std::array::from_fn(|a| {
                     if (r2[a] < r_e2) & (r2[a] > 0.0) {
@@ -291,8 +283,8 @@ fn probe(c: &mut Criterion) {
         // the same forces from both layouts before anything is timed
         let mut f_list = vec![[0.0; 3]; n];
         let mut f_cl = vec![[0.0; 3]; cl.origin.len()];
-        sum_lists(&soa, &lists, &pot, &mut f_list);
-        sum_clusters(&cl, &pot, &mut f_cl);
+        sum_lists(&soa, &lists, m.r_e_m, kondo_over_r(&pot), &mut f_list);
+        sum_clusters(&cl, m.r_e_m, kondo_over_r(&pot), &mut f_cl);
         let largest = f_list.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
         for (s, &o) in cl.origin.iter().enumerate() {
             if o != u32::MAX {
@@ -312,13 +304,29 @@ fn probe(c: &mut Criterion) {
         );
         group.throughput(Throughput::Elements(pairs as u64));
         group.bench_function(BenchmarkId::new("list", re_label(re)), |b| {
-            b.iter(|| sum_lists(black_box(&soa), &lists, &pot, &mut f_list))
+            b.iter(|| {
+                sum_lists(
+                    black_box(&soa),
+                    &lists,
+                    m.r_e_m,
+                    kondo_over_r(&pot),
+                    &mut f_list,
+                )
+            })
         });
         group.bench_function(BenchmarkId::new("list_r2", re_label(re)), |b| {
-            b.iter(|| sum_lists_r2(black_box(&soa), &lists, &pot, &mut f_list))
+            b.iter(|| {
+                sum_lists(
+                    black_box(&soa),
+                    &lists,
+                    m.r_e_m,
+                    polynomial_in_r2(&pot),
+                    &mut f_list,
+                )
+            })
         });
         group.bench_function(BenchmarkId::new("cluster4", re_label(re)), |b| {
-            b.iter(|| sum_clusters(black_box(&cl), &pot, &mut f_cl))
+            b.iter(|| sum_clusters(black_box(&cl), m.r_e_m, kondo_over_r(&pot), &mut f_cl))
         });
     }
     group.finish();

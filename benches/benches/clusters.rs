@@ -24,7 +24,7 @@
 
 mod common;
 
-use benches::{fixture, re_label, sampling};
+use benches::{fixture, re_label, sampling, SIZES};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use solver::physics::surface_tension::Kondo2007Potential;
 use std::hint::black_box;
@@ -263,7 +263,7 @@ fn sum_clusters(c: &Clusters, r_e_m: f64, s_of_r2: impl Fn(f64) -> f64, f: &mut 
 
 fn probe(c: &mut Criterion) {
     let mut group = c.benchmark_group("clusters");
-    let n_side = 27;
+    let (_, n_side) = SIZES[0]; // the 20 k cube
     common::configure(&mut group, sampling(n_side, false));
     for re in [2.1, 4.2] {
         let sim = fixture(n_side, re, false);

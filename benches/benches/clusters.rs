@@ -1,13 +1,20 @@
-//! Would clusters of 4 particles against 4 pay for the pair loops? A probe, not the solver's
-//! code path: the potential's pair force (Kondo's `P'(r) = (r − l0)(r − r_e)`, Eq. (15),
-//! Natsui 2021, one unit coefficient for every pair) summed over every neighbour within
-//! `r_e`, on the seeded, perturbed 20 k cube, by three loops:
+//! How fast can the potential's pair loop be? A probe, not the solver's code path: the
+//! potential's pair force (Kondo's `P'(r) = (r − l0)(r − r_e)`, Eq. (15), Natsui 2021, one unit
+//! coefficient for every pair) summed over every neighbour within `r_e`, on the seeded,
+//! perturbed 20 k cube, by five loops:
 //!
 //! - `clusters/list/re{2.1,4.2}`: the solver's layout — each particle's own list of neighbour
 //!   indices (here plain `u32`, in index order), positions gathered through it, one particle's
 //!   sum at a time;
 //! - `clusters/list_r2/re{2.1,4.2}`: the same loop with a force polynomial in `r²` (same zeros,
 //!   not the solver's force): no square root and no division per pair — what those cost;
+//! - `clusters/lanes_f64/re{2.1,4.2}`: the list loop with its arithmetic in 8 lanes (the
+//!   neighbours gathered 8 at a time, the force computed over the lanes as vector operations,
+//!   summed per lane, the lanes added at the end): the fastest exact loop of the solver's
+//!   force written here;
+//! - `clusters/lanes_f32/re{2.1,4.2}`: the same in single precision (positions from the cube's
+//!   corner, each particle's lanes added in `f64`) — what reduced precision would buy (its
+//!   largest force error is printed at set-up);
 //! - `clusters/cluster4/re{2.1,4.2}`: the list's arithmetic, with the particles grouped in
 //!   clusters of 4 (columns 2 l0 × 2 l0 across, sorted by height, padded with far-away dummies
 //!   to a multiple of 4) and one list of neighbouring clusters per cluster (bounding boxes
@@ -17,8 +24,8 @@
 //! All evaluate each pair from both sides (no scattered writes). Throughput is in pairs within
 //! `r_e` (both directions), so criterion's elements/s are useful pair evaluations per second;
 //! the cluster layout also evaluates masked pairs (its efficiency is printed at set-up). The
-//! list's and the clusters' forces are compared before timing (different summation order:
-//! within 1e-12 of the largest force).
+//! forces of the clusters and of the `f64` lanes are compared with the list's before timing
+//! (another summation order: within 1e-12 of the largest force).
 //!
 //! Run: `cargo bench -p benches --bench clusters [-- FILTER]`.
 
@@ -201,6 +208,102 @@ fn sum_lists(p: &Soa, l: &Lists, r_e_m: f64, s_of_r2: impl Fn(f64) -> f64, f: &m
     }
 }
 
+/// Lanes of the lane-wise loops.
+const L: usize = 8;
+
+/// The list loop with its arithmetic in [`L`] lanes: each particle's neighbours gathered
+/// [`L`] at a time into local arrays (the tail padded with a distance beyond `r_e`), the
+/// force over the lanes (one vector operation per stage), summed per lane and the lanes
+/// added in lane order at the end — another summation order than [`sum_lists`]. Generic
+/// over the float type `T` (`f64`, or `f32` positions and arithmetic with the particle's sum
+/// in `f64`).
+fn sum_lists_lanes<T: Lane>(
+    p: &[Vec<T>; 3],
+    l: &Lists,
+    r_e_m: f64,
+    s_of_r2: impl Fn(T) -> T,
+    f: &mut [[f64; 3]],
+) {
+    let r_e2 = T::from_f64(r_e_m * r_e_m);
+    let pad = T::from_f64(2.0 * r_e_m);
+    let zero = T::from_f64(0.0);
+    for (i, fi) in f.iter_mut().enumerate() {
+        let xi = [p[0][i], p[1][i], p[2][i]];
+        let mut acc = [[zero; L]; 3];
+        for ch in l.ids[l.start[i] as usize..l.start[i + 1] as usize].chunks(L) {
+            let mut d = [[pad; L]; 3];
+            for (n, &j) in ch.iter().enumerate() {
+                for k in 0..3 {
+                    d[k][n] = xi[k] - p[k][j as usize];
+                }
+            }
+            let r2: [T; L] =
+                std::array::from_fn(|n| d[0][n] * d[0][n] + d[1][n] * d[1][n] + d[2][n] * d[2][n]);
+            let s: [T; L] = std::array::from_fn(|n| {
+                let s = s_of_r2(r2[n]);
+                if r2[n] < r_e2 {
+                    s
+                } else {
+                    zero
+                }
+            });
+            for k in 0..3 {
+                for n in 0..L {
+                    acc[k][n] = acc[k][n] + s[n] * d[k][n];
+                }
+            }
+        }
+        *fi = std::array::from_fn(|k| acc[k].iter().map(|v| v.to_f64()).sum());
+    }
+}
+
+/// A float type of the lane-wise loop.
+trait Lane:
+    Copy
+    + PartialOrd
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+{
+    fn from_f64(v: f64) -> Self;
+    fn to_f64(self) -> f64;
+    fn sqrt(self) -> Self;
+}
+
+impl Lane for f64 {
+    fn from_f64(v: f64) -> Self {
+        v
+    }
+    fn to_f64(self) -> f64 {
+        self
+    }
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
+    }
+}
+
+impl Lane for f32 {
+    fn from_f64(v: f64) -> Self {
+        v as f32
+    }
+    fn to_f64(self) -> f64 {
+        self as f64
+    }
+    fn sqrt(self) -> Self {
+        f32::sqrt(self)
+    }
+}
+
+/// Kondo's `P'(r)/r` in the lanes' float type (as [`kondo_over_r`]).
+fn kondo_over_r_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
+    let (l0, re) = (T::from_f64(pot.l0_m), T::from_f64(pot.r_e_m));
+    move |r2: T| {
+        let r = r2.sqrt();
+        (r - l0) * (r - re) / r
+    }
+}
+
 /// Kondo's `P'(r)/r = (r − l0)(r − r_e)/r` from `r²`: a square root and a division.
 fn kondo_over_r(pot: &Kondo2007Potential) -> impl Fn(f64) -> f64 {
     let (l0, re) = (pot.l0_m, pot.r_e_m);
@@ -294,6 +397,44 @@ fn probe(c: &mut Criterion) {
                 }
             }
         }
+        // the lane-wise loops: f64 on the same positions; f32 on positions from the cube's
+        // corner (a 1 mm cube: f32 spacing of ~6e-11 m there, 2e-6 l0)
+        let p64 = [soa.x.clone(), soa.y.clone(), soa.z.clone()];
+        let corner = [min(&soa.x), min(&soa.y), min(&soa.z)];
+        let p32: [Vec<f32>; 3] =
+            std::array::from_fn(|k| p64[k].iter().map(|v| (v - corner[k]) as f32).collect());
+        let mut f_lanes = vec![[0.0; 3]; n];
+        sum_lists_lanes(
+            &p64,
+            &lists,
+            m.r_e_m,
+            kondo_over_r_lane::<f64>(&pot),
+            &mut f_lanes,
+        );
+        let mut f_32 = vec![[0.0; 3]; n];
+        sum_lists_lanes(
+            &p32,
+            &lists,
+            m.r_e_m,
+            kondo_over_r_lane::<f32>(&pot),
+            &mut f_32,
+        );
+        let worst = |g: &[[f64; 3]]| {
+            g.iter()
+                .zip(&f_list)
+                .flat_map(|(a, b)| (0..3).map(move |k| (a[k] - b[k]).abs()))
+                .fold(0.0f64, f64::max)
+                / largest
+        };
+        // another summation order in f64: rounding of ~300 terms, far below 1e-12
+        assert!(worst(&f_lanes) <= 1e-12, "f64 lanes disagree");
+        // f32: rounding of 6e-8 per operation over ~30–260 terms that largely cancel; 1e-4
+        // only catches a wrong loop (off by the order of the force), the error is printed
+        assert!(worst(&f_32) <= 1e-4, "f32 lanes disagree");
+        println!(
+            "r_e = {re} l0: the f32 lanes' largest force error {:.2e} of the largest force",
+            worst(&f_32)
+        );
         println!(
             "r_e = {re} l0: {n} particles, {:.1} neighbours each; {} clusters ({} slots), {:.1} neighbouring clusters each, {:.0} % of the evaluated pairs within r_e",
             pairs as f64 / n as f64,
@@ -322,6 +463,28 @@ fn probe(c: &mut Criterion) {
                     m.r_e_m,
                     polynomial_in_r2(&pot),
                     &mut f_list,
+                )
+            })
+        });
+        group.bench_function(BenchmarkId::new("lanes_f64", re_label(re)), |b| {
+            b.iter(|| {
+                sum_lists_lanes(
+                    black_box(&p64),
+                    &lists,
+                    m.r_e_m,
+                    kondo_over_r_lane::<f64>(&pot),
+                    &mut f_lanes,
+                )
+            })
+        });
+        group.bench_function(BenchmarkId::new("lanes_f32", re_label(re)), |b| {
+            b.iter(|| {
+                sum_lists_lanes(
+                    black_box(&p32),
+                    &lists,
+                    m.r_e_m,
+                    kondo_over_r_lane::<f32>(&pot),
+                    &mut f_32,
                 )
             })
         });

@@ -1,7 +1,7 @@
 //! How fast can the potential's pair loop be? A probe, not the solver's code path: the
 //! potential's pair force (Kondo's `P'(r) = (r − l0)(r − r_e)`, Eq. (15), Natsui 2021, one unit
 //! coefficient for every pair) summed over every neighbour within `r_e`, on the seeded,
-//! perturbed 20 k cube, by five loops:
+//! perturbed 20 k cube, by six loops:
 //!
 //! - `clusters/list/re{2.1,4.2}`: the solver's layout — each particle's own list of neighbour
 //!   indices (here plain `u32`, in index order), positions gathered through it, one particle's
@@ -12,6 +12,8 @@
 //!   neighbours gathered 8 at a time, the force computed over the lanes as vector operations,
 //!   summed per lane, the lanes added at the end): the fastest exact loop of the solver's
 //!   force written here;
+//! - `clusters/lanes_r2/re{2.1,4.2}`: the lanes with the force polynomial in `r²` of
+//!   `list_r2` — what a sqrt-free potential would cost in lanes;
 //! - `clusters/lanes_f32/re{2.1,4.2}`: the same in single precision (positions from the cube's
 //!   corner, each particle's lanes added in `f64`) — what reduced precision would buy (its
 //!   largest force error is printed at set-up);
@@ -295,6 +297,16 @@ impl Lane for f32 {
     }
 }
 
+/// [`polynomial_in_r2`] in the lanes' float type.
+fn polynomial_in_r2_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
+    let (l02, re2) = (
+        T::from_f64(pot.l0_m * pot.l0_m),
+        T::from_f64(pot.r_e_m * pot.r_e_m),
+    );
+    let scale = T::from_f64(1.0 / (pot.l0_m + pot.r_e_m).powi(3));
+    move |r2: T| (r2 - l02) * (r2 - re2) * scale
+}
+
 /// Kondo's `P'(r)/r` in the lanes' float type (as [`kondo_over_r`]).
 fn kondo_over_r_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
     let (l0, re) = (T::from_f64(pot.l0_m), T::from_f64(pot.r_e_m));
@@ -473,6 +485,17 @@ fn probe(c: &mut Criterion) {
                     &lists,
                     m.r_e_m,
                     kondo_over_r_lane::<f64>(&pot),
+                    &mut f_lanes,
+                )
+            })
+        });
+        group.bench_function(BenchmarkId::new("lanes_r2", re_label(re)), |b| {
+            b.iter(|| {
+                sum_lists_lanes(
+                    black_box(&p64),
+                    &lists,
+                    m.r_e_m,
+                    polynomial_in_r2_lane::<f64>(&pot),
                     &mut f_lanes,
                 )
             })

@@ -297,8 +297,10 @@ impl Lane for f32 {
     }
 }
 
-/// [`polynomial_in_r2`] in the lanes' float type.
-fn polynomial_in_r2_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
+/// `P'(r)/r = (r² − l0²)(r² − r_e²) / (r (r + l0)(r + r_e))` with the denominator replaced by
+/// the constant `(l0 + r_e)³`: the same zeros, not the same force (not the solver's physics);
+/// no square root and no division — what those cost.
+fn polynomial_in_r2<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T + Copy {
     let (l02, re2) = (
         T::from_f64(pot.l0_m * pot.l0_m),
         T::from_f64(pot.r_e_m * pot.r_e_m),
@@ -307,31 +309,13 @@ fn polynomial_in_r2_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
     move |r2: T| (r2 - l02) * (r2 - re2) * scale
 }
 
-/// Kondo's `P'(r)/r` in the lanes' float type (as [`kondo_over_r`]).
-fn kondo_over_r_lane<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T {
+/// Kondo's `P'(r)/r = (r − l0)(r − r_e)/r` from `r²`: a square root and a division.
+fn kondo_over_r<T: Lane>(pot: &Kondo2007Potential) -> impl Fn(T) -> T + Copy {
     let (l0, re) = (T::from_f64(pot.l0_m), T::from_f64(pot.r_e_m));
     move |r2: T| {
         let r = r2.sqrt();
         (r - l0) * (r - re) / r
     }
-}
-
-/// Kondo's `P'(r)/r = (r − l0)(r − r_e)/r` from `r²`: a square root and a division.
-fn kondo_over_r(pot: &Kondo2007Potential) -> impl Fn(f64) -> f64 {
-    let (l0, re) = (pot.l0_m, pot.r_e_m);
-    move |r2: f64| {
-        let r = r2.sqrt();
-        (r - l0) * (r - re) / r
-    }
-}
-
-/// `P'(r)/r = (r² − l0²)(r² − r_e²) / (r (r + l0)(r + r_e))` with the denominator replaced by
-/// the constant `(l0 + r_e)³`: the same zeros, not the same force (not the solver's physics);
-/// no square root and no division — what those cost.
-fn polynomial_in_r2(pot: &Kondo2007Potential) -> impl Fn(f64) -> f64 {
-    let (l02, re2) = (pot.l0_m * pot.l0_m, pot.r_e_m * pot.r_e_m);
-    let scale = 1.0 / (pot.l0_m + pot.r_e_m).powi(3);
-    move |r2: f64| (r2 - l02) * (r2 - re2) * scale
 }
 
 /// The force on every slot through the cluster lists [N per unit coefficient].
@@ -391,6 +375,8 @@ fn probe(c: &mut Criterion) {
             z: pp.pos[..n].iter().map(|v| v.z).collect(),
         };
         let pot = m.potential;
+        let (kondo, kondo32) = (kondo_over_r::<f64>(&pot), kondo_over_r::<f32>(&pot));
+        let poly = polynomial_in_r2::<f64>(&pot);
         let lists = neighbour_lists(&soa, m.r_e_m);
         let cl = clusters(&soa, m.l0_m, m.r_e_m);
         let pairs = lists.ids.len();
@@ -398,8 +384,8 @@ fn probe(c: &mut Criterion) {
         // the same forces from both layouts before anything is timed
         let mut f_list = vec![[0.0; 3]; n];
         let mut f_cl = vec![[0.0; 3]; cl.origin.len()];
-        sum_lists(&soa, &lists, m.r_e_m, kondo_over_r(&pot), &mut f_list);
-        sum_clusters(&cl, m.r_e_m, kondo_over_r(&pot), &mut f_cl);
+        sum_lists(&soa, &lists, m.r_e_m, kondo, &mut f_list);
+        sum_clusters(&cl, m.r_e_m, kondo, &mut f_cl);
         let largest = f_list.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
         for (s, &o) in cl.origin.iter().enumerate() {
             if o != u32::MAX {
@@ -416,21 +402,9 @@ fn probe(c: &mut Criterion) {
         let p32: [Vec<f32>; 3] =
             std::array::from_fn(|k| p64[k].iter().map(|v| (v - corner[k]) as f32).collect());
         let mut f_lanes = vec![[0.0; 3]; n];
-        sum_lists_lanes(
-            &p64,
-            &lists,
-            m.r_e_m,
-            kondo_over_r_lane::<f64>(&pot),
-            &mut f_lanes,
-        );
+        sum_lists_lanes(&p64, &lists, m.r_e_m, kondo, &mut f_lanes);
         let mut f_32 = vec![[0.0; 3]; n];
-        sum_lists_lanes(
-            &p32,
-            &lists,
-            m.r_e_m,
-            kondo_over_r_lane::<f32>(&pot),
-            &mut f_32,
-        );
+        sum_lists_lanes(&p32, &lists, m.r_e_m, kondo32, &mut f_32);
         let worst = |g: &[[f64; 3]]| {
             g.iter()
                 .zip(&f_list)
@@ -456,63 +430,27 @@ fn probe(c: &mut Criterion) {
             100.0 * pairs as f64 / evaluated as f64
         );
         group.throughput(Throughput::Elements(pairs as u64));
-        group.bench_function(BenchmarkId::new("list", re_label(re)), |b| {
-            b.iter(|| {
-                sum_lists(
-                    black_box(&soa),
-                    &lists,
-                    m.r_e_m,
-                    kondo_over_r(&pot),
-                    &mut f_list,
-                )
-            })
+        let mut time = |name: &str, run: &mut dyn FnMut()| {
+            group.bench_function(BenchmarkId::new(name, re_label(re)), |b| b.iter(&mut *run));
+        };
+        // the inputs through `black_box` at every iteration: nothing is hoisted out of the timing
+        time("list", &mut || {
+            sum_lists(black_box(&soa), &lists, m.r_e_m, kondo, &mut f_list)
         });
-        group.bench_function(BenchmarkId::new("list_r2", re_label(re)), |b| {
-            b.iter(|| {
-                sum_lists(
-                    black_box(&soa),
-                    &lists,
-                    m.r_e_m,
-                    polynomial_in_r2(&pot),
-                    &mut f_list,
-                )
-            })
+        time("list_r2", &mut || {
+            sum_lists(black_box(&soa), &lists, m.r_e_m, poly, &mut f_list)
         });
-        group.bench_function(BenchmarkId::new("lanes_f64", re_label(re)), |b| {
-            b.iter(|| {
-                sum_lists_lanes(
-                    black_box(&p64),
-                    &lists,
-                    m.r_e_m,
-                    kondo_over_r_lane::<f64>(&pot),
-                    &mut f_lanes,
-                )
-            })
+        time("lanes_f64", &mut || {
+            sum_lists_lanes(black_box(&p64), &lists, m.r_e_m, kondo, &mut f_lanes)
         });
-        group.bench_function(BenchmarkId::new("lanes_r2", re_label(re)), |b| {
-            b.iter(|| {
-                sum_lists_lanes(
-                    black_box(&p64),
-                    &lists,
-                    m.r_e_m,
-                    polynomial_in_r2_lane::<f64>(&pot),
-                    &mut f_lanes,
-                )
-            })
+        time("lanes_r2", &mut || {
+            sum_lists_lanes(black_box(&p64), &lists, m.r_e_m, poly, &mut f_lanes)
         });
-        group.bench_function(BenchmarkId::new("lanes_f32", re_label(re)), |b| {
-            b.iter(|| {
-                sum_lists_lanes(
-                    black_box(&p32),
-                    &lists,
-                    m.r_e_m,
-                    kondo_over_r_lane::<f32>(&pot),
-                    &mut f_32,
-                )
-            })
+        time("lanes_f32", &mut || {
+            sum_lists_lanes(black_box(&p32), &lists, m.r_e_m, kondo32, &mut f_32)
         });
-        group.bench_function(BenchmarkId::new("cluster4", re_label(re)), |b| {
-            b.iter(|| sum_clusters(black_box(&cl), m.r_e_m, kondo_over_r(&pot), &mut f_cl))
+        time("cluster4", &mut || {
+            sum_clusters(black_box(&cl), m.r_e_m, kondo, &mut f_cl)
         });
     }
     group.finish();

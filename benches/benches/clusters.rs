@@ -217,8 +217,8 @@ const L: usize = 8;
 /// [`L`] at a time into local arrays (the tail padded with a distance beyond `r_e`), the
 /// force over the lanes (one vector operation per stage), summed per lane and the lanes
 /// added in lane order at the end — another summation order than [`sum_lists`]. Generic
-/// over the float type `T` (`f64`, or `f32` positions and arithmetic with the particle's sum
-/// in `f64`).
+/// over the float type `T` of the positions, the arithmetic and the lanes' sums (`f64` or
+/// `f32`); the lanes are added in `f64`.
 fn sum_lists_lanes<T: Lane>(
     p: &[Vec<T>; 3],
     l: &Lists,
@@ -396,7 +396,7 @@ fn probe(c: &mut Criterion) {
             }
         }
         // the lane-wise loops: f64 on the same positions; f32 on positions from the cube's
-        // corner (a 1 mm cube: f32 spacing of ~6e-11 m there, 2e-6 l0)
+        // corner (a 1 mm cube: f32 spacing of at most 1.2e-10 m there, 3e-6 l0)
         let p64 = [soa.x.clone(), soa.y.clone(), soa.z.clone()];
         let corner = [min(&soa.x), min(&soa.y), min(&soa.z)];
         let p32: [Vec<f32>; 3] =

@@ -64,8 +64,9 @@ const VOLUME_M3: f64 = 20.0e-9;
 /// The plate's radius [m]. A measured run of 1 s on a 7 mm plate: the oil slid off the water
 /// to one side, both drops drifted (the pair's centre of mass up to 4.2 mm off the axis), and the oil
 /// reached 6.0–6.7 mm from the axis while still spreading. On 12 mm the 3 s run in `reports/`
-/// (revision 8fba23b) drifted further (centre of mass 7.7 mm off the axis at 1 s, 9.35 mm at most) and its oil reached
-/// 11.5 mm, 2.5 l0 short of the edge, nothing over it; each liquid alone stayed on the axis.
+/// (revision 8fba23b) drifted further (centre of mass 7.7 mm off the axis at 1 s, 9.35 mm at
+/// most) and its oil reached 11.5 mm, 2.5 l0 short of the edge, nothing over it; each liquid
+/// alone stayed on the axis.
 const PLATE_RADIUS_M: f64 = 12.0e-3;
 /// The end of the runs of each liquid alone [s], at standard and paper fidelity: about one
 /// spreading time μR/σ of the oil (the pair runs longer, [`end`]).

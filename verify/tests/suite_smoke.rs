@@ -156,6 +156,27 @@ fn drop_oscillation_smoke() {
 }
 
 #[test]
+fn convergence_smoke() {
+    let (m, out) = run("convergence");
+    // every run is measured (a failed fit or cap gives NaN) and each metric's order is
+    // computed; whether the errors fall at these coarse spacings is the measurement, kept by
+    // the snapshot
+    for x in m.iter().filter(|x| !x.name.contains("side view")) {
+        if !x.name.contains("falls with resolution") {
+            assert!(x.value.is_finite(), "{}: {}", x.name, x.value);
+        }
+    }
+    for s in ["drop l = 2 period", "cap 60° (from height)"] {
+        let name = format!("{s}: observed order");
+        assert!(m.iter().any(|x| x.name == name), "{name}");
+    }
+    assert!(out.join("convergence/error_vs_spacing.png").exists());
+    assert!(out.join("convergence/table.md").exists());
+    insta::assert_snapshot!("convergence", summary(&m));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
 fn shear_wave_smoke() {
     let (m, out) = run("shear_wave");
     // without the potential the lattice carries no stress: the SPH viscous operator alone

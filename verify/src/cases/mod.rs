@@ -1,6 +1,7 @@
 //! The paper checks, one module each.
 
 mod analysis;
+mod convergence;
 mod cube_drop;
 mod doublet;
 mod drop_oscillation;
@@ -23,6 +24,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(cube_drop::CubeDrop),
         Box::new(drop_oscillation::DropOscillation),
         Box::new(shear_wave::ShearWave),
+        Box::new(convergence::Convergence),
         Box::new(doublet::Doublet(doublet::Pair::Equal)),
         Box::new(doublet::Doublet(doublet::Pair::MatteSlag)),
         Box::new(plate_eq23::PlateEq23),

@@ -1,5 +1,6 @@
 //! Measurements on simulated data: oscillation period and damping, geometric fits.
 
+pub mod convergence;
 pub mod fit;
 pub mod geometry;
 pub mod invariants;

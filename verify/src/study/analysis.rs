@@ -2,6 +2,7 @@
 
 use super::grid::Variant;
 use super::points::PointResult;
+use crate::measure::convergence::observed_order;
 use std::fmt::Write as _;
 
 /// Indices of the points on the Pareto front of |error| against wall time (no other point is
@@ -23,34 +24,18 @@ pub fn pareto_front(points: &[&PointResult]) -> Vec<usize> {
     front
 }
 
-/// Least-squares order `p` of `|error| ∝ l0^p` and its R², from at least three points.
+/// Least-squares order `p` of `|error| ∝ l0^p` and its R², from at least three points
+/// ([`observed_order`]).
 pub fn convergence_order(points: &[&PointResult]) -> Option<(f64, f64)> {
-    let xy: Vec<(f64, f64)> = points
+    let (l0, err): (Vec<f64>, Vec<f64>) = points
         .iter()
         .filter(|p| p.relative_error.is_finite() && p.relative_error != 0.0)
-        .map(|p| (p.l0_m.ln(), p.relative_error.abs().ln()))
-        .collect();
-    if xy.len() < 3 {
+        .map(|p| (p.l0_m, p.relative_error))
+        .unzip();
+    if l0.len() < 3 {
         return None;
     }
-    let n = xy.len() as f64;
-    let (mx, my) = (
-        xy.iter().map(|p| p.0).sum::<f64>() / n,
-        xy.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxx: f64 = xy.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let sxy: f64 = xy.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let syy: f64 = xy.iter().map(|p| (p.1 - my).powi(2)).sum();
-    if sxx == 0.0 {
-        return None;
-    }
-    let slope = sxy / sxx;
-    let r2 = if syy > 0.0 {
-        sxy * sxy / (sxx * syy)
-    } else {
-        1.0
-    };
-    Some((slope, r2))
+    observed_order(&l0, &err)
 }
 
 /// Conclusions in words, drawn from the data: the front, the cheapest point at 5 % and 2 %, and

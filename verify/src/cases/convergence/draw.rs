@@ -1,0 +1,135 @@
+//! The convergence case's figures and table: |error| against l0 (log–log, with slopes 1 and 2),
+//! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution).
+
+use super::judge::{cap_series, drop_series};
+use super::measure::{DropPoint, Measured};
+use super::Series as ErrorSeries;
+use crate::report::plot::{self, Plot, Series, SeriesKind};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Draws every figure of the case and writes `table.md` into `dir`.
+pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
+    let mut all: Vec<ErrorSeries> = drop_series(&m.drops).into();
+    all.extend(cap_series(&m.caps));
+    error_against_spacing(&all, dir)?;
+    drop_histories(&m.drops, dir)?;
+    std::fs::write(dir.join("table.md"), drop_table(&m.drops))?;
+    Ok(())
+}
+
+/// `log10 |error|` against `log10(l0/R)`, one line per metric, and the slopes 1 and 2 through
+/// the coarsest point of the first measured metric.
+fn error_against_spacing(all: &[ErrorSeries], dir: &Path) -> anyhow::Result<()> {
+    let log = |(h, e): (f64, f64)| (h.log10(), e.abs().log10());
+    let mut series: Vec<Series> = all
+        .iter()
+        .enumerate()
+        .map(|(k, s)| Series {
+            label: match s.order() {
+                Some((p, _)) => format!("{} (p = {p:.2})", s.label),
+                None => s.label.clone(),
+            },
+            points: s.points.iter().copied().map(log).collect(),
+            kind: SeriesKind::LineMarkers,
+            color: k + 1,
+        })
+        .collect();
+    let anchor = all
+        .iter()
+        .flat_map(|s| s.points.iter().copied())
+        .find(|p| p.1.is_finite() && p.1 != 0.0);
+    let spacings: Vec<f64> = all
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.0))
+        .collect();
+    if let Some((h0, e0)) = anchor {
+        let lo = spacings.iter().copied().fold(f64::INFINITY, f64::min);
+        for order in [1.0, 2.0] {
+            series.push(Series {
+                label: format!("slope {order:.0}"),
+                points: [lo, h0]
+                    .iter()
+                    .map(|&h| log((h, e0.abs() * (h / h0).powf(order))))
+                    .collect(),
+                kind: SeriesKind::Dashed,
+                color: 0,
+            });
+        }
+    }
+    plot::draw(
+        &Plot {
+            title: "Convergence: |relative error| against the spacing".into(),
+            x_label: "log10(l0 / R)".into(),
+            y_label: "log10 |relative error|".into(),
+            series,
+            x_range: None,
+            y_range: None,
+            hlines: vec![],
+        },
+        &dir.join("error_vs_spacing"),
+    )
+}
+
+/// Q2 over its value at 1 ms against t / Rayleigh period, per resolution.
+fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
+    let series = drops
+        .iter()
+        .enumerate()
+        .map(|(k, d)| {
+            let (t, q) = &d.series;
+            let q0 = q.first().copied().unwrap_or(1.0);
+            Series {
+                label: format!("R/l0 = {:.0}", d.r_over_l0),
+                points: t
+                    .iter()
+                    .zip(q)
+                    .map(|(t, q)| (t / d.rayleigh_period_s, q / q0))
+                    .collect(),
+                kind: SeriesKind::Line,
+                color: k + 1,
+            }
+        })
+        .collect();
+    plot::draw(
+        &Plot {
+            title: "Free drop, l = 2: Q2 from 1 ms, per resolution".into(),
+            x_label: "t / Rayleigh period".into(),
+            y_label: "Q2 / Q2(1 ms)".into(),
+            series,
+            x_range: None,
+            y_range: None,
+            hlines: vec![(0.0, "a liquid settles at 0".into())],
+        },
+        &dir.join("drop_q2"),
+    )
+}
+
+/// The drop's table: R/l0, particles, period, error, decay rate and its ratio to Lamb's with
+/// the physical ν alone, wall time.
+fn drop_table(drops: &[DropPoint]) -> String {
+    let mut s = String::from(
+        "| R/l0 | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for d in drops {
+        let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
+            (f.period_s, f.damping_rate_per_s, f.offset)
+        });
+        let _ = writeln!(
+            s,
+            "| {:.0} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.0} |",
+            d.r_over_l0,
+            d.run.info.fluid_particles,
+            p * 1e3,
+            d.rayleigh_period_s * 1e3,
+            100.0 * (p / d.rayleigh_period_s - 1.0),
+            g,
+            g / d.lamb_physical_per_s,
+            g / d.lamb_with_av_per_s,
+            b,
+            d.run.info.wall_time_s
+        );
+    }
+    s
+}

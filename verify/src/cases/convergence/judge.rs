@@ -1,0 +1,209 @@
+//! The convergence case's metrics: each point against its analytic reference, and each
+//! metric's observed order with the check that its error falls as `l0` is refined.
+
+use super::measure::{CapPoint, DropPoint, Measured};
+use super::Series;
+use crate::suite::{Metric, Tolerance};
+
+/// A small-amplitude period within 3 % of Rayleigh's (README, "Targets of the liquid model").
+const PERIOD_TARGET: f64 = 0.03;
+/// A damping within ±30 % of Lamb's with ν + ν_AV (README, "Targets of the liquid model").
+const DAMPING_TARGET: f64 = 0.30;
+
+/// The static-angle target [deg] at `theta_deg`: ±2° for 60–120°, ±4° at 30° and 150° (README,
+/// "Targets of the liquid model").
+fn angle_target_deg(theta_deg: f64) -> f64 {
+    if (60.0..=120.0).contains(&theta_deg) {
+        2.0
+    } else {
+        4.0
+    }
+}
+
+/// The period's and the damping's relative errors per resolution `(l0/R, error)`.
+pub fn drop_series(drops: &[DropPoint]) -> [Series; 2] {
+    let rel = |v: f64, r: f64| (v - r) / r;
+    let (period, damping) = drops
+        .iter()
+        .map(|d| {
+            let (p, g) = d
+                .fit
+                .as_ref()
+                .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
+            let h = 1.0 / d.r_over_l0;
+            (
+                (h, rel(p, d.rayleigh_period_s)),
+                (h, rel(g, d.lamb_with_av_per_s)),
+            )
+        })
+        .unzip();
+    [
+        Series {
+            label: "drop l = 2 period".into(),
+            points: period,
+        },
+        Series {
+            label: "drop l = 2 damping (ν + ν_AV)".into(),
+            points: damping,
+        },
+    ]
+}
+
+/// The caps' angle errors relative to the typed angle per resolution, one series per angle.
+pub fn cap_series(caps: &[CapPoint]) -> Vec<Series> {
+    let mut angles: Vec<f64> = caps.iter().map(|c| c.typed_deg).collect();
+    angles.dedup();
+    angles
+        .into_iter()
+        .map(|theta| Series {
+            label: format!("cap {theta:.0}° (from height)"),
+            points: caps
+                .iter()
+                .filter(|c| c.typed_deg == theta)
+                .map(|c| {
+                    let e = c.height_angle_deg.map_or(f64::NAN, |a| (a - theta) / theta);
+                    (1.0 / c.n, e)
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// Every metric of the case.
+pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
+    let mut out: Vec<Metric> = m.drops.iter().flat_map(|d| drop_metrics(case, d)).collect();
+    out.extend(m.caps.iter().flat_map(|c| cap_metrics(case, c)));
+    let series = drop_series(&m.drops).into_iter().chain(cap_series(&m.caps));
+    for s in series {
+        out.extend(order_metrics(case, &s));
+    }
+    out
+}
+
+fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
+    let r = d.r_over_l0;
+    let status = d.run.status_note();
+    let (period, gamma, offset_note) = match &d.fit {
+        Ok(f) => (
+            f.period_s,
+            f.damping_rate_per_s,
+            format!(
+                "damped-cosine fit of Q2 from 1 ms: amplitude {:.3}, offset {:+.4} (a liquid's is 0), rms residual {:.1e}",
+                f.amplitude, f.offset, f.rms_residual
+            ),
+        ),
+        Err(e) => (f64::NAN, f64::NAN, format!("fit failed: {e}")),
+    };
+    let t_ms = d.rayleigh_period_s * 1e3;
+    vec![
+        Metric::new(case, format!("drop period R/l0={r:.0}"), "ms", period * 1e3)
+            .against(
+                t_ms,
+                Tolerance::relative(
+                    PERIOD_TARGET,
+                    t_ms,
+                    "3 %: the liquid model's target for a small-amplitude period",
+                ),
+            )
+            .run(d.run)
+            .note(format!(
+                "{status}{offset_note}; Rayleigh's period for the drop's volume; error {:+.1} %",
+                100.0 * (period * 1e3 / t_ms - 1.0)
+            )),
+        Metric::new(case, format!("drop damping R/l0={r:.0}"), "1/s", gamma)
+            .against(
+                d.lamb_with_av_per_s,
+                Tolerance::relative(
+                    DAMPING_TARGET,
+                    d.lamb_with_av_per_s,
+                    "30 %: the liquid model's target for the damping (ν_AV = α1 h c/10 is an estimate)",
+                ),
+            )
+            .run(d.run)
+            .note(format!(
+                "{status}Lamb's 5ν/R² with ν + ν_AV; ×{:.1} Lamb's with the physical ν alone ({:.2} 1/s)",
+                gamma / d.lamb_physical_per_s,
+                d.lamb_physical_per_s
+            )),
+    ]
+}
+
+fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {
+    let (theta, n) = (c.typed_deg, c.n);
+    let status = c.run.status_note();
+    let target = angle_target_deg(theta);
+    let side = match &c.side_view_deg {
+        Ok(a) => *a,
+        Err(_) => f64::NAN,
+    };
+    let side_note = match &c.side_view_deg {
+        Ok(_) => "side-view sphere fit to the surface band next to the plate, on the last state"
+            .to_string(),
+        Err(e) => format!("side-view fit failed: {e}"),
+    };
+    vec![
+        Metric::new(
+            case,
+            format!("cap {theta:.0}° n={n:.0} (height)"),
+            "deg",
+            c.height_angle_deg.unwrap_or(f64::NAN),
+        )
+        .against(
+            theta,
+            Tolerance::absolute(
+                target,
+                format!("±{target}°: the liquid model's target for a static angle"),
+            ),
+        )
+        .run(c.run)
+        .note(format!(
+            "{status}the spherical cap of the drop's volume and its settled height {:.4} mm (±{:.4} mm over the last quarter; the cap at the typed angle: {:.4} mm)",
+            c.height_m * 1e3,
+            c.height_swing_m * 1e3,
+            c.reference_height_m * 1e3
+        )),
+        Metric::new(case, format!("cap {theta:.0}° n={n:.0} (side view)"), "deg", side)
+            .run(c.run)
+            .note(format!("{status}{side_note}"))
+            .against_if(theta, None),
+    ]
+}
+
+/// A metric family's observed order (reported) and whether its error falls with resolution
+/// (judged: an error that grows as the spacing is refined is a failure of convergence).
+fn order_metrics(case: &str, s: &Series) -> Vec<Metric> {
+    let errors: Vec<String> = s
+        .points
+        .iter()
+        .map(|(h, e)| format!("{:+.1} % at R/l0 = {:.0}", 100.0 * e, 1.0 / h))
+        .collect();
+    let note = format!("relative errors {}", errors.join(", "));
+    let order = s.order();
+    let mut out = vec![Metric::new(
+        case,
+        format!("{}: observed order", s.label),
+        "-",
+        order.map_or(f64::NAN, |o| o.0),
+    )
+    .note(match order {
+        Some((p, r2)) => format!(
+            "|error| ∝ l0^p, least squares over the resolutions: p = {p:.2}, R² = {r2:.2}; {note}"
+        ),
+        None => format!("fewer than two measured points; {note}"),
+    })];
+    out.push(
+        Metric::check(
+            case,
+            format!("{}: error falls with resolution", s.label),
+            "yes",
+            s.falls() == Some(true),
+            "convergence: |error| at the finest spacing below that at the coarsest",
+        )
+        .note(match s.falls() {
+            Some(true) => format!("converges: {note}"),
+            Some(false) => format!("does not converge — the error grows as l0 is refined: {note}"),
+            None => format!("not every resolution measured: {note}"),
+        }),
+    );
+    out
+}

@@ -1,0 +1,144 @@
+//! What the runs give: the free drop's fitted l = 2 oscillation and the caps' settled angles,
+//! each with its resolution. References use the liquid of the run's own scene, so a `--set`
+//! that changes a property is judged against the right analytic value.
+
+use super::{FIT_FROM_S, Q2, RADIUS_M};
+use crate::analytic::{lamb, young_laplace};
+use crate::cases::scene::artificial_viscosity_m2_s;
+use crate::cases::substrate::tail_stats;
+use crate::measure::geometry;
+use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
+use crate::measure::surface;
+use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
+use crate::suite::RunData;
+
+/// The free drop at one resolution.
+pub struct DropPoint<'r> {
+    /// The run.
+    pub run: &'r RunData,
+    /// `R/l0` with the nominal radius [-].
+    pub r_over_l0: f64,
+    /// Rayleigh's l = 2 period for the drop's volume (particles × l0³) [s].
+    pub rayleigh_period_s: f64,
+    /// Lamb's l = 2 decay rate with the physical ν alone [1/s].
+    pub lamb_physical_per_s: f64,
+    /// Lamb's l = 2 decay rate with ν + ν_AV (α1 h c/10) [1/s].
+    pub lamb_with_av_per_s: f64,
+    /// Times [s] and Q2 [-] of the series fitted (from [`FIT_FROM_S`]).
+    pub series: (Vec<f64>, Vec<f64>),
+    /// The damped cosine fitted to Q2 from [`FIT_FROM_S`], or why it failed.
+    pub fit: Result<OscillationFit, String>,
+}
+
+/// A cap at one angle and resolution.
+pub struct CapPoint<'r> {
+    /// The run.
+    pub run: &'r RunData,
+    /// Spacings per initial hemisphere radius [-].
+    pub n: f64,
+    /// The typed Young angle [deg].
+    pub typed_deg: f64,
+    /// The settled height above the plate [m]: mean of the top particle over the last quarter,
+    /// plus l0/2 (the particle's half-spacing).
+    pub height_m: f64,
+    /// Half the top's peak-to-peak range over that quarter [m]: how settled it is.
+    pub height_swing_m: f64,
+    /// The analytic cap height for the drop's volume at the typed angle [m].
+    pub reference_height_m: f64,
+    /// The angle of the spherical cap of the drop's volume and the settled height [deg].
+    pub height_angle_deg: Option<f64>,
+    /// The side-view fit's angle on the last state [deg], or why it failed.
+    pub side_view_deg: Result<f64, String>,
+}
+
+/// Every run of the case, measured.
+pub struct Measured<'r> {
+    /// Free drops, coarsest first.
+    pub drops: Vec<DropPoint<'r>>,
+    /// Caps, by angle then coarsest first.
+    pub caps: Vec<CapPoint<'r>>,
+}
+
+/// Measures the runs (drops have no wall, caps have one).
+pub fn measure(runs: &[RunData]) -> Measured<'_> {
+    let mut m = Measured {
+        drops: runs
+            .iter()
+            .filter(|r| r.info.scene.walls.is_empty())
+            .map(drop_point)
+            .collect(),
+        caps: runs
+            .iter()
+            .filter(|r| !r.info.scene.walls.is_empty())
+            .map(cap_point)
+            .collect(),
+    };
+    m.drops.sort_by(|a, b| a.r_over_l0.total_cmp(&b.r_over_l0));
+    m.caps
+        .sort_by(|a, b| (a.typed_deg, a.n).partial_cmp(&(b.typed_deg, b.n)).unwrap());
+    m
+}
+
+/// The drop's volume: its particles' rest volume l0³ [m³].
+fn volume_m3(run: &RunData) -> f64 {
+    let l0 = run.info.scene.discretisation.l0;
+    run.info.fluid_particles as f64 * l0 * l0 * l0
+}
+
+fn drop_point(run: &RunData) -> DropPoint<'_> {
+    let scene = &run.info.scene;
+    let liquid = &scene.liquids[0];
+    let radius = lamb::sphere_radius_from_volume(volume_m3(run));
+    let sigma = liquid.surface_tension.unwrap_or(f64::NAN);
+    let nu = liquid.viscosity / liquid.density;
+    let t = run
+        .probes
+        .column(&RunColumn::Time.name())
+        .unwrap_or_default();
+    let q2 = run.probes.column(Q2).unwrap_or_default();
+    let from = t.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(t.len());
+    let n = t.len().min(q2.len()).max(from);
+    let series = (t[from..n].to_vec(), q2[from..n].to_vec());
+    DropPoint {
+        run,
+        r_over_l0: RADIUS_M / scene.discretisation.l0,
+        rayleigh_period_s: lamb::lamb_period(2, sigma, liquid.density, radius),
+        lamb_physical_per_s: lamb::lamb_damping_rate(2, nu, radius),
+        // the artificial viscosity's effective ν ≈ α1 h c/10 (Monaghan 1992)
+        lamb_with_av_per_s: lamb::lamb_damping_rate(
+            2,
+            nu + artificial_viscosity_m2_s(scene),
+            radius,
+        ),
+        fit: fit_damped_cosine(&series.0, &series.1),
+        series,
+    }
+}
+
+fn cap_point(run: &RunData) -> CapPoint<'_> {
+    let scene = &run.info.scene;
+    let liquid = &scene.liquids[0].name;
+    let l0 = scene.discretisation.l0;
+    let typed_deg = scene.solids[0].contact_angles[liquid];
+    let t = run.timeseries.run_column(RunColumn::Time);
+    let top = run
+        .timeseries
+        .liquid_column(liquid, LiquidColumn::Max(Axis::Z));
+    // the last quarter of the run: the settled state
+    let from = t.last().map_or(f64::NAN, |end| 0.75 * end);
+    let (mean_top, swing) = tail_stats(&t, &top, from);
+    let height_m = mean_top + 0.5 * l0;
+    let volume = volume_m3(run);
+    let cloud = run.last.cloud(l0);
+    let classes = surface::classify(&cloud);
+    CapPoint {
+        run,
+        n: RADIUS_M / l0,
+        typed_deg,
+        height_m,
+        height_swing_m: swing,
+        reference_height_m: young_laplace::spherical_cap(volume, typed_deg).height_m,
+        height_angle_deg: young_laplace::spherical_cap_angle_from_height(volume, height_m),
+        side_view_deg: geometry::sessile_contact_angle(&cloud, &classes, 0, 0.0),
+    }
+}

@@ -1,0 +1,304 @@
+//! Does the capillarity model converge? The error of two analytic problems against the particle
+//! spacing `l0`, with the observed order of convergence of each metric.
+//!
+//! - **Free drop, l = 2**: a water drop with the volume of a sphere of radius `R` = 1 mm starts
+//!   at rest as a prolate spheroid (semi-axes `R/√(1+ε)`, `R/√(1+ε)`, `R(1+ε)`, ε = 0.1) in zero
+//!   gravity, at three `R/l0`. Its axial moment Q2 ([`axial_quadrupole_q2`]) after 1 ms (the
+//!   release transient) is fitted by a damped cosine: the period against Rayleigh's for the
+//!   drop's volume, the decay rate against Lamb's with ν + ν_AV.
+//! - **Caps at 30°, 60°, 120°**: a matte drop released as a hemisphere of radius `R` = 1 mm on
+//!   a free-slip plate in zero gravity, at three `R/l0`; its settled height (the mean of the
+//!   top over the last quarter of the run) gives the angle of the spherical cap of the drop's
+//!   volume, judged against the typed angle; the side-view fit's angle is reported beside it.
+//!
+//! Each metric's error is fitted as `|error| ∝ l0^p` ([`observed_order`]); a metric whose error
+//! does not fall from the coarsest to the finest spacing does not converge, and the case says so.
+//! The sound speed follows the cohesion rule ([`sound_speed_for`]) at each spacing; everything
+//! else is the scene's default, so `--set` judges any other model or setting the same way.
+
+mod draw;
+mod judge;
+mod measure;
+
+use super::analysis::{self, Analysis};
+use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, MATTE};
+use crate::analytic::lamb;
+use crate::measure::convergence::observed_order;
+use crate::measure::shape::axial_quadrupole_q2;
+use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use solver::scene::{BodyShape, WallBoundary, WallShape};
+use solver::Simulation;
+use std::path::Path;
+
+/// The case.
+pub struct Convergence;
+
+/// Equal-volume radius of the free drop, and radius of the caps' initial hemisphere [m].
+const RADIUS_M: f64 = 1e-3;
+/// Initial stretch of the free drop along z [-].
+const EPSILON: f64 = 0.1;
+/// The fit of the free drop starts after the release transient [s].
+const FIT_FROM_S: f64 = 1e-3;
+/// Radius of the caps' plate [m]: the 30° cap of the hemisphere's volume has a wetted radius of
+/// 1.69 R.
+const PLATE_RADIUS_M: f64 = 2.2 * RADIUS_M;
+
+/// Water at 20 °C: σ 72.8 mN/m, μ 1.0 mPa·s, ρ 997 kg/m³.
+const WATER_20C: LiquidProps = LiquidProps {
+    name: "water",
+    density_kg_m3: 997.0,
+    viscosity_pa_s: 1.0e-3,
+    surface_tension_n_m: 0.0728,
+};
+
+/// Name of the probe column of the free drop's axial moment.
+const Q2: &str = "q2";
+
+/// The resolutions of a fidelity: `R/l0` of the free drop, spacings per radius of the caps, the
+/// caps' angles [deg].
+struct Design {
+    drops: Vec<f64>,
+    caps: Vec<f64>,
+    angles_deg: Vec<f64>,
+}
+
+fn design(f: Fidelity) -> Design {
+    match f {
+        Fidelity::Smoke => Design {
+            drops: vec![5.0, 6.0, 7.0],
+            caps: vec![5.0, 6.0, 7.0],
+            angles_deg: vec![60.0],
+        },
+        Fidelity::Standard => Design {
+            drops: vec![10.0, 14.0, 20.0],
+            caps: vec![8.0, 11.0, 16.0],
+            angles_deg: vec![30.0, 60.0, 120.0],
+        },
+        Fidelity::Paper => Design {
+            drops: vec![10.0, 14.0, 20.0, 28.0],
+            caps: vec![8.0, 11.0, 16.0, 22.0],
+            angles_deg: vec![30.0, 60.0, 120.0],
+        },
+    }
+}
+
+/// Rayleigh's l = 2 period of the nominal free drop [s].
+fn rayleigh_period_s() -> f64 {
+    lamb::lamb_period(
+        2,
+        WATER_20C.surface_tension_n_m,
+        WATER_20C.density_kg_m3,
+        RADIUS_M,
+    )
+}
+
+/// End times [s] of the free drop (the transient and two Rayleigh periods) and of the caps
+/// (20 ms ≈ 6 capillary times √(ρR³/σ) of matte: settled, as the study's caps).
+fn end_times_s(f: Fidelity) -> (f64, f64) {
+    match f {
+        Fidelity::Smoke => (FIT_FROM_S + rayleigh_period_s(), 5e-3),
+        _ => (FIT_FROM_S + 2.0 * rayleigh_period_s(), 20e-3),
+    }
+}
+
+/// Run id of the free drop at `R/l0`.
+fn drop_id(r_over_l0: f64) -> String {
+    format!("drop_r{r_over_l0:.0}")
+}
+
+/// Run id of the cap at `theta_deg` with `n` spacings per radius.
+fn cap_id(theta_deg: f64, n: f64) -> String {
+    format!("cap_{theta_deg:.0}_n{n:.0}")
+}
+
+fn drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
+    let l0 = RADIUS_M / r_over_l0;
+    let (a, c) = (
+        RADIUS_M / (1.0 + EPSILON).sqrt(),
+        RADIUS_M * (1.0 + EPSILON),
+    );
+    SceneBuilder::new(l0, sound_speed_for(&WATER_20C, l0, 0.0))
+        .time(end_times_s(f).0, 1e-4)
+        .paper_effects()
+        .liquid(&WATER_20C)
+        .body(
+            "drop",
+            WATER_20C.name,
+            BodyShape::Ellipsoid {
+                center: [0.0; 3],
+                semi_axes: [a, a, c],
+            },
+        )
+        .build()
+}
+
+fn cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
+    let l0 = RADIUS_M / n;
+    SceneBuilder::new(l0, sound_speed_for(&MATTE, l0, 0.0))
+        .time(end_times_s(f).1, 2e-4)
+        .paper_effects()
+        .liquid(&MATTE)
+        .solid("plate", &[(MATTE.name, theta_deg)])
+        .body(
+            "drop",
+            MATTE.name,
+            BodyShape::Hemisphere {
+                center: [0.0; 3],
+                radius: RADIUS_M,
+                pole: [0.0, 0.0, 1.0],
+            },
+        )
+        .wall(
+            "plate",
+            "plate",
+            WallShape::Disk {
+                center: [0.0; 3],
+                radius: PLATE_RADIUS_M,
+            },
+            WallBoundary::FreeSlip,
+        )
+        .build()
+}
+
+impl Case for Convergence {
+    fn name(&self) -> &'static str {
+        "convergence"
+    }
+    fn title(&self) -> &'static str {
+        "Convergence: the l = 2 drop and zero-gravity caps at three resolutions, with the observed order of each error"
+    }
+    fn source(&self) -> &'static str {
+        "Rayleigh (1879); Lamb (1932) §275, §355; the spherical cap of the drop's volume — a diagnostic of the model, not a paper check"
+    }
+    fn effects(&self) -> Option<DeclaredEffects> {
+        // the drops have no wall, the caps do
+        None
+    }
+    fn resolution(&self, f: Fidelity) -> String {
+        let d = design(f);
+        let why = match f {
+            Fidelity::Smoke => "seconds per run: that the case runs and fits",
+            Fidelity::Standard => {
+                "the finest drop (33,500 particles) is most of the cost; see reports/convergence/README.md for the measured wall times"
+            }
+            Fidelity::Paper => "one finer point of each beyond standard",
+        };
+        format!(
+            "free water drop at R/l0 = {:?} (ε = {EPSILON}), matte caps at {:?}° with {:?} spacings per radius; {why}.",
+            d.drops, d.angles_deg, d.caps
+        )
+    }
+    fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
+        let d = design(f);
+        let drops = d.drops.iter().map(|&r| RunSpec {
+            id: drop_id(r),
+            scene: drop_scene(f, r),
+            snapshot_times_s: vec![],
+        });
+        let caps = d.angles_deg.iter().flat_map(|&theta| {
+            d.caps.iter().map(move |&n| RunSpec {
+                id: cap_id(theta, n),
+                scene: cap_scene(f, theta, n),
+                snapshot_times_s: vec![],
+            })
+        });
+        drops.chain(caps).collect()
+    }
+    fn probe(&self, sim: &Simulation) -> Vec<(&'static str, f64)> {
+        let p = &sim.particles;
+        let points: Vec<[f64; 3]> = p.pos[..p.n_fluid].iter().map(|x| [x.x, x.y, x.z]).collect();
+        vec![(Q2, axial_quadrupole_q2(&points))]
+    }
+    fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
+        analysis::analyse(self, f, runs, dir)
+    }
+}
+
+impl Analysis for Convergence {
+    type Measured<'r> = measure::Measured<'r>;
+
+    fn measure<'r>(&self, _: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
+        Ok(measure::measure(runs))
+    }
+
+    fn judge(&self, _: Fidelity, measured: &Self::Measured<'_>) -> anyhow::Result<Vec<Metric>> {
+        Ok(judge::metrics(self.name(), measured))
+    }
+
+    fn draw(&self, _: Fidelity, measured: &Self::Measured<'_>, dir: &Path) -> anyhow::Result<()> {
+        draw::plots(measured, dir)
+    }
+}
+
+/// One metric's errors across resolutions and its observed order: what the judge and the plot
+/// share.
+pub struct Series {
+    /// Label, e.g. `drop period` or `cap 30° (height)`.
+    pub label: String,
+    /// `(l0/R, relative error)` per resolution, coarsest first [-].
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Series {
+    /// `|error| ∝ l0^p`: `(p, R²)`, from the finite points.
+    pub fn order(&self) -> Option<(f64, f64)> {
+        let (h, e): (Vec<f64>, Vec<f64>) = self.points.iter().copied().unzip();
+        observed_order(&h, &e)
+    }
+
+    /// Whether the error at the finest spacing is smaller than at the coarsest (both measured).
+    pub fn falls(&self) -> Option<bool> {
+        let finite: Vec<&(f64, f64)> = self.points.iter().filter(|p| p.1.is_finite()).collect();
+        if finite.len() < 2 || finite.len() < self.points.len() {
+            return None;
+        }
+        let coarse = finite.iter().max_by(|a, b| a.0.total_cmp(&b.0))?;
+        let fine = finite.iter().min_by(|a, b| a.0.total_cmp(&b.0))?;
+        Some(fine.1.abs() < coarse.1.abs())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn runs_cover_every_resolution_with_the_declared_shapes() {
+        for f in [Fidelity::Smoke, Fidelity::Standard, Fidelity::Paper] {
+            let d = design(f);
+            let runs = Convergence.runs(f);
+            assert_eq!(
+                runs.len(),
+                d.drops.len() + d.caps.len() * d.angles_deg.len()
+            );
+            for r in &runs {
+                let walls = !r.scene.walls.is_empty();
+                assert_eq!(walls, r.id.starts_with("cap_"), "{}", r.id);
+                assert!(r.scene.effects.gravity.is_none(), "{}: zero gravity", r.id);
+            }
+        }
+        // the drop's spheroid has the volume of the sphere of radius R
+        let (a, c) = (1.0 / (1.0 + EPSILON).sqrt(), 1.0 + EPSILON);
+        assert!((a * a * c - 1.0).abs() < 1e-12);
+        // the 30° cap of the hemisphere's volume fits on the plate
+        let v = 2.0 / 3.0 * std::f64::consts::PI * RADIUS_M.powi(3);
+        let cap = crate::analytic::young_laplace::spherical_cap(v, 30.0);
+        assert!(cap.contact_radius_m < PLATE_RADIUS_M - 2.0 * RADIUS_M / 8.0);
+    }
+
+    #[test]
+    fn a_series_falls_only_when_its_finest_error_is_smaller() {
+        let s = |e: [f64; 3]| Series {
+            label: "x".into(),
+            points: vec![(0.1, e[0]), (0.07, e[1]), (0.05, e[2])],
+        };
+        assert_eq!(s([0.1, 0.05, -0.02]).falls(), Some(true));
+        assert_eq!(s([-0.27, -0.40, -0.52]).falls(), Some(false));
+        assert_eq!(s([0.1, f64::NAN, 0.02]).falls(), None);
+        let (p, _) = s([-0.27, -0.40, -0.52]).order().unwrap();
+        assert!(
+            p < 0.0,
+            "an error growing with refinement has a negative order: {p}"
+        );
+    }
+}

@@ -3,8 +3,10 @@
 //! The revision is the commit `HEAD` names, 12 hex digits, with `-dirty` when the sources that
 //! make the binary (the two crates, the workspace manifest and lock file) differ from that
 //! commit, untracked source files included. Cargo re-runs this script when any of those sources
-//! changes and when the commit changes (the file `HEAD` points to, the packed refs, the index),
-//! so a binary never carries the revision of an older build.
+//! changes and when the commit changes (`HEAD`, the branch file it names, the packed refs), so a
+//! binary never carries the revision of an older build. Not on a change of the index: `git
+//! status` rewrites it without changing any source or commit, and staging does not change
+//! whether the sources differ from the commit.
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -54,17 +56,13 @@ fn main() {
     for s in SOURCES {
         println!("cargo:rerun-if-changed=../{s}");
     }
-    // the commit: HEAD, the branch file it names, packed refs, the index
+    // the commit: HEAD, the branch file it names, packed refs
     if let Some(dir) = git(&["rev-parse", "--absolute-git-dir"]) {
         let dir = PathBuf::from(dir);
         let common = git(&["rev-parse", "--path-format=absolute", "--git-common-dir"])
             .map(PathBuf::from)
             .unwrap_or_else(|| dir.clone());
-        let mut watch: Vec<PathBuf> = vec![
-            dir.join("HEAD"),
-            dir.join("index"),
-            common.join("packed-refs"),
-        ];
+        let mut watch: Vec<PathBuf> = vec![dir.join("HEAD"), common.join("packed-refs")];
         if let Some(r) = git(&["symbolic-ref", "-q", "HEAD"]) {
             watch.push(common.join(&r));
         }

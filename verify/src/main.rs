@@ -1,4 +1,4 @@
-//! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in the README.
+//! `verify`: run scenes and reproduce the papers' checks. Exit codes are listed in docs/user-guide.md.
 
 use clap::{Parser, Subcommand};
 use solver::kernel::KernelKind;
@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use verify::cases;
-use verify::diagnostics::{lattice_moduli, slab_tension};
+use verify::diagnostics::{lattice_moduli, slab_tension, surface_stress};
 use verify::plan::{self, TaskOptions};
 use verify::preflight;
 use verify::report::summary;
@@ -162,6 +162,17 @@ impl RunArgs {
                 0
             }
             Err(e) => {
+                if matches!(e, verify::output::RunError::Simulation(_)) {
+                    // a finding flagged before step 1 is the likely cause: named first
+                    let info = verify::output::run_info::RunInfo::read(&opts.out_dir);
+                    let flagged = info
+                        .ok()
+                        .and_then(|i| i.warnings.into_iter().find(|w| !w.starts_with("accepted")));
+                    if let Some(w) = flagged {
+                        let what = w.split(". Likely cause").next().unwrap_or(&w);
+                        eprintln!("error: flagged before step 1, the likely cause: {what}");
+                    }
+                }
                 eprintln!("error: {e}");
                 e.exit_code()
             }
@@ -222,6 +233,23 @@ enum Command {
         re_over_l0: Vec<f64>,
         /// Orders m of the potential's zero at r_e (1: Kondo 2007; 2, 3: smoother).
         #[arg(long, value_delimiter = ',', default_value = "1")]
+        order: Vec<u8>,
+    },
+    /// Surface energy γ and surface stress f of a flat lattice surface (f/γ: a liquid has 1),
+    /// for the pairwise potential (r_e/l0, order) and the square-gradient energy (kernel, h/l0);
+    /// default: the accuracy–cost study's variants. Give all four lists for their product.
+    SurfaceStress {
+        /// Kernels.
+        #[arg(long, value_enum, value_delimiter = ',')]
+        kernel: Vec<KernelArg>,
+        /// Smoothing lengths h/l0.
+        #[arg(long = "h", value_delimiter = ',')]
+        h_over_l0: Vec<f64>,
+        /// Potential cut-offs r_e/l0.
+        #[arg(long = "re", value_delimiter = ',')]
+        re_over_l0: Vec<f64>,
+        /// Orders m of the potential's zero at r_e (1: Kondo 2007).
+        #[arg(long, value_delimiter = ',')]
         order: Vec<u8>,
     },
     /// The surface tension of each liquid of a scene as the relaxed particle liquid has it:
@@ -474,6 +502,16 @@ fn main() {
             );
             0
         }
+        Command::SurfaceStress {
+            kernel,
+            h_over_l0,
+            re_over_l0,
+            order,
+        } => {
+            let settings = surface_stress_settings(kernel, h_over_l0, re_over_l0, order);
+            print!("{}", surface_stress::table(&settings));
+            0
+        }
         Command::SlabTension {
             scene,
             kernel,
@@ -550,11 +588,20 @@ fn run_suite(
         }
     }
     runner::write_record(&opts.out, opts.fidelity)?;
+    let mut tally = verify::suite::tally::RunTally::default();
     for case in &cases {
         if names.is_some_and(|n| !n.iter().any(|x| x == case.name())) {
             continue;
         }
+        let specs = runner::specs_of(case.as_ref(), opts)?;
+        let finished: Vec<bool> = specs
+            .iter()
+            .map(|s| !opts.force && runner::is_finished(&opts.out, case.as_ref(), s))
+            .collect();
         let metrics = runner::run_case(case.as_ref(), opts)?;
+        for (spec, reused) in specs.iter().zip(finished) {
+            tally.add(&runner::run_dir(&opts.out, case.as_ref(), spec), reused);
+        }
         let judged = metrics.iter().filter(|m| m.pass().is_some()).count();
         let passed = metrics.iter().filter(|m| m.pass() == Some(true)).count();
         eprintln!(
@@ -563,7 +610,12 @@ fn run_suite(
         );
     }
     let regressions = summary::write_all(&opts.out, opts.fidelity, &cases, baseline)?;
-    eprintln!("summary: {}", opts.out.join("summary.md").display());
+    eprintln!("{}", tally.describe());
+    eprintln!(
+        "summary: {} (written by revision {})",
+        opts.out.join("summary.md").display(),
+        env!("GIT_REVISION")
+    );
     if let Some(r) = regressions {
         if !r.is_empty() {
             eprintln!("{} metric(s) worse than the baseline:", r.len());
@@ -590,8 +642,10 @@ fn report(out: &Path) -> anyhow::Result<i32> {
     Ok(0)
 }
 
-/// `verify check`: the findings, the step estimate and a timed sample of `sample_steps` steps;
-/// exit 2 under `strict` with findings.
+/// `verify check`: the findings, the step estimate and a timed sample of `sample_steps` steps.
+/// Exit as `run` would: 2 when the scene cannot be built (e.g. overlapping bodies), 1 when the
+/// sample stops on an error, 2 under `strict` with findings; the findings are named first, as
+/// the likely cause of a failing sample.
 fn check_scene(
     path: &Path,
     strict: bool,
@@ -636,13 +690,40 @@ fn check_scene(
         if let Some(n) = threads {
             pool = pool.num_threads(n);
         }
-        // a sample that fails is what the run would do: said, not an error of the check
-        if let Err(e) = pool.build()?.install(|| sample(&scene, sample_steps)) {
-            println!("sample: the run fails: {e:#}");
+        // a sample that fails is what the run would do: the check fails as the run would
+        match pool.build()?.install(|| sample(&scene, sample_steps)) {
+            Ok(()) => {}
+            Err(e) => {
+                let built = e.downcast_ref::<SampleStepError>().is_some();
+                // the finding's first sentence: what was flagged, before its cause and fix
+                let findings_first = findings.first().map_or(String::new(), |f| {
+                    let text = f.to_string();
+                    let what = text.split(". Likely cause").next().unwrap_or(&text);
+                    format!(" — flagged before step 1: {what}")
+                });
+                if built {
+                    println!("sample: the run fails{findings_first}: {e:#}");
+                    return Ok(1);
+                }
+                println!("the scene cannot be built: {e:#}");
+                return Ok(2);
+            }
         }
     }
     Ok(if strict && !findings.is_empty() { 2 } else { 0 })
 }
+
+/// A sampled step stopped on an error (the scene was built).
+#[derive(Debug)]
+struct SampleStepError(String);
+
+impl std::fmt::Display for SampleStepError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for SampleStepError {}
 
 /// Builds `scene`'s particles, times `steps` steps on the current thread pool, and prints the
 /// particles, neighbours, the rate, the whole run's estimated wall time, and the sample's memory.
@@ -659,7 +740,8 @@ fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
     let t0 = std::time::Instant::now();
     let mut taken = 0;
     while taken < steps && sim.time_s < scene.time.end {
-        sim.step(scene.time.end - sim.time_s)?;
+        sim.step(scene.time.end - sim.time_s)
+            .map_err(|e| SampleStepError(e.to_string()))?;
         taken += 1;
     }
     let wall = t0.elapsed().as_secs_f64();
@@ -847,4 +929,46 @@ fn sweep(scene: &Path, set: &[String], out: &Path, threads: Option<usize>) -> an
         plan::run_task(out, k, &opts)?;
     }
     collect(out)
+}
+
+/// The settings of `surface-stress`: the product of the lists given, each defaulting to the
+/// study's values; with no list given, the study's variants themselves.
+fn surface_stress_settings(
+    kernel: Vec<KernelArg>,
+    h_over_l0: Vec<f64>,
+    re_over_l0: Vec<f64>,
+    order: Vec<u8>,
+) -> Vec<(KernelKind, f64, f64, u8)> {
+    let variants = verify::study::Grid::Standard.variants();
+    if kernel.is_empty() && h_over_l0.is_empty() && re_over_l0.is_empty() && order.is_empty() {
+        let mut v: Vec<(KernelKind, f64, f64, u8)> = variants
+            .iter()
+            .map(|v| (v.kernel, v.h_over_l0, v.re_over_l0, v.potential_order))
+            .collect();
+        v.dedup();
+        return v;
+    }
+    let d = verify::study::Variant::DEFAULT;
+    let or = |v: Vec<f64>, x: f64| if v.is_empty() { vec![x] } else { v };
+    let kernels: Vec<KernelKind> = if kernel.is_empty() {
+        vec![d.kernel]
+    } else {
+        kernel.into_iter().map(KernelKind::from).collect()
+    };
+    let orders = if order.is_empty() {
+        vec![d.potential_order]
+    } else {
+        order
+    };
+    let mut out = Vec::new();
+    for &k in &kernels {
+        for &h in &or(h_over_l0.clone(), d.h_over_l0) {
+            for &re in &or(re_over_l0.clone(), d.re_over_l0) {
+                for &m in &orders {
+                    out.push((k, h, re, m));
+                }
+            }
+        }
+    }
+    out
 }

@@ -140,9 +140,16 @@ fn check_names_the_unit_slip_and_strict_refuses_it() {
     );
     let out = verify().arg("check").arg(&scene).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "{text}");
     assert!(
         text.contains("did you mean 400 mN/m") && text.contains("surface_tension = 4e-1"),
+        "{text}"
+    );
+    // the sample fails as the run would (Mach, at σ 1000 times too large): the check fails
+    // with the run's exit code, and names the slip it flagged before the step that failed
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("sample: the run fails")
+            && text.contains("flagged before step 1: surface tension of matte: σ = 400 N/m"),
         "{text}"
     );
     assert!(
@@ -173,6 +180,40 @@ fn check_names_the_unit_slip_and_strict_refuses_it() {
         String::from_utf8_lossy(&refused.stderr)
     );
     assert!(!dir.join("strict").exists());
+}
+
+#[test]
+fn check_refuses_what_run_refuses() {
+    let dir = tmp("check-overlap");
+    // a plate whose top (z = 0) cuts through the drop centred at the origin
+    let scene = scene_file(
+        &dir,
+        &format!(
+            "{SMALL}\n[[solid]]\nname = \"plate\"\ncontact_angles = {{ matte = 90.0 }}\n\
+             [[wall]]\nname = \"plate\"\nsolid = \"plate\"\n\
+             shape = {{ kind = \"disk\", center = [0.0, 0.0, 0.0], radius = 1.0e-3 }}\n"
+        ),
+    );
+    let check = verify().arg("check").arg(&scene).output().unwrap();
+    let run = verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        run.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(
+        check.status.code(),
+        run.status.code(),
+        "{}",
+        String::from_utf8_lossy(&check.stdout)
+    );
 }
 
 #[test]

@@ -91,7 +91,7 @@ shape = { kind = "box", min = [-5.0e-4, -5.0e-4, -5.0e-4], max = [5.0e-4, 5.0e-4
     /// (about the step the cube really takes, 2.2 µs) it outweighs the booking and has the
     /// other sign: near the forces' equilibrium a shift towards uniform concentration raises
     /// the energy at second order. That is the energy shifting feeds into a drop at rest
-    /// (README, "Model choices").
+    /// (docs/findings.md, "Model choices").
     #[test]
     fn the_booked_work_is_the_first_order_energy_change_of_a_shift() {
         let mut sim = cube();

@@ -3,3 +3,4 @@
 
 pub mod lattice_moduli;
 pub mod slab_tension;
+pub mod surface_stress;

@@ -41,7 +41,7 @@ mod tests {
             let e: Vec<f64> = h
                 .iter()
                 .enumerate()
-                .map(|(k, x)| if k % 2 == 0 { 3.0 } else { -3.0 } * x.powf(p))
+                .map(|(k, x): (usize, &f64)| if k % 2 == 0 { 3.0 } else { -3.0 } * x.powf(p))
                 .collect();
             let (q, r2) = observed_order(&h, &e).unwrap();
             assert!(

@@ -20,7 +20,7 @@ pub enum RunError {
 }
 
 impl RunError {
-    /// Process exit code (see the README).
+    /// Process exit code (see docs/user-guide.md, "Running a scene").
     pub fn exit_code(&self) -> i32 {
         match self {
             RunError::Simulation(_) => 1,

@@ -5,7 +5,7 @@ use crate::diagnostics::lattice_moduli;
 use solver::scene::WallShape;
 use solver::{Model, Scene};
 
-/// The compression the potential's cohesive pressure may cause [-]: the README's rule
+/// The compression the potential's cohesive pressure may cause [-]: the sound-speed rule of docs/user-guide.md
 /// `c² ≥ 1.75 σ/(0.01 ρ l0)` aims at 1 %; the 5 % margin on it covers the rule's rounding of
 /// the lattice's cohesive pressure (1.755 σ/l0 at r_e = 4.2 l0) to 1.75.
 pub const MAX_COHESIVE_COMPRESSION: f64 = 0.0105;
@@ -215,7 +215,7 @@ mod tests {
 
     #[test]
     fn the_cohesion_rule_is_met_at_its_sound_speed_and_not_below() {
-        // the README's rule: c² ≥ 1.75 σ/(0.01 ρ l0) = 126 m²/s² here, c = 11.2 m/s
+        // the sound-speed rule of docs/user-guide.md: c² ≥ 1.75 σ/(0.01 ρ l0) = 126 m²/s² here, c = 11.2 m/s
         let c = (1.75f64 * 0.072 / (0.01 * 1000.0 * 1e-4)).sqrt();
         assert!(findings(&drop_scene(c, "")).is_empty());
         let f = findings(&drop_scene(0.5 * c, ""));

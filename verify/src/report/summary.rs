@@ -129,12 +129,11 @@ fn header(
     let _ = writeln!(s, "# Verification summary\n");
     let _ = writeln!(
         s,
-        "Fidelity **{}**; this report was written by the binary of revision `{}`. {passed} of {} judged metrics within tolerance; {} \
+        "Fidelity **{}**. {passed} of {} judged metrics within tolerance; {} \
          reported without a reference. Every reference value is computed by the code \
          (`verify/src/analytic`); \"paper\" is what the paper's own simulation reached \
          (`reference/paper_values.toml`). Error = value − reference.\n",
         fidelity.name(),
-        env!("GIT_REVISION"),
         judged.len(),
         metrics.len() - judged.len()
     );

@@ -72,7 +72,7 @@ impl Problem {
     }
 
     /// The liquid model's target for this problem as a relative error [-], with its source
-    /// (README, "Targets of the liquid model"); `None` where the README sets none.
+    /// (docs/findings.md, "Targets of the liquid model"); `None` where it sets none.
     pub fn target(self) -> Option<(f64, &'static str)> {
         match self {
             Problem::CubeDrop => Some((0.03, "period within 3 %")),

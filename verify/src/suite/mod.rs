@@ -10,6 +10,7 @@ pub mod dump;
 pub mod metric;
 pub mod overrides;
 pub mod runner;
+pub mod tally;
 
 pub use metric::{Metric, Tolerance};
 

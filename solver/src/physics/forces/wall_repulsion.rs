@@ -9,7 +9,7 @@
 //! a wall, so resting liquid does not feel it) the barrier of the gap is
 //! `4 D [((r0/r)¹² − 1)/12 − ((r0/r)⁴ − 1)/4] = 0.495 D` at `r = l0/√2`; `D = 10 p_b l0³` makes it
 //! five times the work `p_b l0³` the cohesive background pressure `p_b` of the liquid does in
-//! pushing one particle one layer in (docs: README, "Writing a scene").
+//! pushing one particle one layer in (docs/scene-reference.md).
 
 use super::term::{Lane, Lanes, Neighbour, PairKinematics, PairSums, PairTerm, Particle, CHUNK};
 

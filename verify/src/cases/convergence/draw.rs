@@ -109,8 +109,8 @@ fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
 /// the physical ν alone, wall time.
 fn drop_table(drops: &[DropPoint]) -> String {
     let mut s = String::from(
-        "| R/l0 | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|\n",
+        "| R/l0 | l0 [µm] | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for d in drops {
         let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
@@ -118,8 +118,9 @@ fn drop_table(drops: &[DropPoint]) -> String {
         });
         let _ = writeln!(
             s,
-            "| {:.0} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.0} |",
             d.r_over_l0,
+            d.run.info.scene.discretisation.l0 * 1e6,
             d.run.info.fluid_particles,
             p * 1e3,
             d.rayleigh_period_s * 1e3,

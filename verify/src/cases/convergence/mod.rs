@@ -25,9 +25,10 @@ use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, MATTE};
 use crate::analytic::lamb;
 use crate::measure::convergence::observed_order;
 use crate::measure::shape::axial_quadrupole_q2;
-use crate::suite::{Case, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use crate::suite::{Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
 use solver::scene::{BodyShape, WallBoundary, WallShape};
 use solver::Simulation;
+use std::f64::consts::SQRT_2;
 use std::path::Path;
 
 /// The case.
@@ -69,13 +70,14 @@ fn design(f: Fidelity) -> Design {
             caps: vec![5.0, 6.0, 7.0],
             angles_deg: vec![60.0],
         },
+        // R/l0 in steps of √2 (the particle count doubles from one to the next)
         Fidelity::Standard => Design {
-            drops: vec![10.0, 14.0, 20.0],
+            drops: vec![10.0, 10.0 * SQRT_2, 20.0],
             caps: vec![8.0, 11.0, 16.0],
             angles_deg: vec![30.0, 60.0, 120.0],
         },
         Fidelity::Paper => Design {
-            drops: vec![10.0, 14.0, 20.0, 28.0],
+            drops: vec![10.0, 10.0 * SQRT_2, 20.0, 20.0 * SQRT_2],
             caps: vec![8.0, 11.0, 16.0, 22.0],
             angles_deg: vec![30.0, 60.0, 120.0],
         },
@@ -173,6 +175,12 @@ impl Case for Convergence {
     fn effects(&self) -> Option<DeclaredEffects> {
         // the drops have no wall, the caps do
         None
+    }
+    fn accepted_findings(&self, _: Fidelity) -> Vec<(Check, String)> {
+        vec![(
+            Check::Resolution,
+            "the case is a resolution sweep: its coarse points (a hemisphere of 8 spacings per radius is 4 across its half-thickness) are the subject, their errors the measurement".into(),
+        )]
     }
     fn resolution(&self, f: Fidelity) -> String {
         let d = design(f);

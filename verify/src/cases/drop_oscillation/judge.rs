@@ -8,9 +8,9 @@ use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::suite::{Metric, Tolerance};
 
 /// The liquid model's target for the period of a small-amplitude oscillation: a liquid's period
-/// is set by σ, ρ and R alone (README, "Targets of the liquid model").
+/// is set by σ, ρ and R alone (docs/findings.md, "Targets of the liquid model").
 const PERIOD_TARGET: f64 = 0.03;
-/// The liquid model's target for the damping (README, "Targets of the liquid model").
+/// The liquid model's target for the damping (docs/findings.md, "Targets of the liquid model").
 const DAMPING_TARGET: f64 = 0.30;
 
 /// Rayleigh's period and Lamb's damping of a run's drop.

@@ -1,4 +1,5 @@
 //! Reports: the summary tables and the plots.
 
+pub mod known_misses;
 pub mod plot;
 pub mod summary;

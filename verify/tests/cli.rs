@@ -18,7 +18,7 @@ fn tmp(name: &str) -> PathBuf {
     d
 }
 
-use common::{verify, SMALL};
+use common::{verify, Quiet, SMALL};
 
 #[test]
 fn run_writes_timeseries_run_info_and_snapshots() {
@@ -31,7 +31,7 @@ fn run_writes_timeseries_run_info_and_snapshots() {
         .arg("--out")
         .arg(&out)
         .args(["--vtk", "1", "--threads", "2"])
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     let info: serde_json::Value =
@@ -60,7 +60,7 @@ fn run_writes_timeseries_run_info_and_snapshots() {
         .arg(&scene)
         .arg("--out")
         .arg(&out)
-        .status()
+        .quiet()
         .unwrap();
     assert_eq!(st.code(), Some(3));
     let st = verify()
@@ -69,7 +69,7 @@ fn run_writes_timeseries_run_info_and_snapshots() {
         .arg("--out")
         .arg(&out)
         .arg("--force")
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     let _ = std::fs::remove_dir_all(&dir);
@@ -160,7 +160,7 @@ fn check_names_the_unit_slip_and_strict_refuses_it() {
         .arg("check")
         .arg(&scene)
         .arg("--strict")
-        .status()
+        .quiet()
         .unwrap();
     assert_eq!(strict.code(), Some(2));
     // `run --strict` refuses it before making the output folder; without it the run warns and
@@ -226,7 +226,7 @@ fn a_run_keeps_its_findings_in_its_record() {
         .arg(&scene)
         .arg("--out")
         .arg(&out)
-        .status()
+        .quiet()
         .unwrap()
         .success());
     let info: serde_json::Value =

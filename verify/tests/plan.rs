@@ -16,7 +16,7 @@ fn dir(name: &str) -> PathBuf {
     d
 }
 
-use common::{verify, SMALL};
+use common::{verify, Quiet, SMALL};
 
 /// The tasks' labels and folders of the plan in `plan`.
 fn tasks(plan: &Path) -> Vec<(String, String)> {
@@ -90,7 +90,7 @@ fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_s
         .arg("--out")
         .arg(&serial)
         .stderr(Stdio::null())
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
 
@@ -100,7 +100,7 @@ fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_s
         .arg("--out")
         .arg(&plan)
         .stdout(Stdio::null())
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     for f in ["run.sbatch", "submit.sh"] {
@@ -114,7 +114,7 @@ fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_s
         .expect("the task exists");
     for i in shuffled(list.len()) {
         if i != stopped {
-            let st = task(&plan, i).stderr(Stdio::null()).status().unwrap();
+            let st = task(&plan, i).stderr(Stdio::null()).quiet().unwrap();
             assert!(st.success(), "task {i} ({})", list[i].0);
             continue;
         }
@@ -161,7 +161,7 @@ fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_s
     assert!(out.status.success());
     assert!(!String::from_utf8_lossy(&out.stderr).contains(&list[stopped].0));
 
-    let st = verify().arg("collect").arg(&plan).status().unwrap();
+    let st = verify().arg("collect").arg(&plan).quiet().unwrap();
     assert_eq!(st.code(), Some(0));
     let a = std::fs::read(serial.join("summary.csv")).unwrap();
     let b = std::fs::read(plan.join("summary.csv")).unwrap();
@@ -182,7 +182,7 @@ fn a_sweep_runs_every_combination_and_tabulates_them() {
     let st = sweep(&scene, &sets, &out, false)
         .args(["--threads", "2"])
         .stderr(Stdio::null())
-        .status()
+        .quiet()
         .unwrap();
     assert_eq!(st.code(), Some(0));
     let mut rdr = csv::Reader::from_path(out.join("sweep.csv")).unwrap();
@@ -203,7 +203,7 @@ fn a_sweep_runs_every_combination_and_tabulates_them() {
     let before = std::fs::read(out.join("sweep.csv")).unwrap();
     let st = sweep(&scene, &sets, &out, false)
         .stderr(Stdio::null())
-        .status()
+        .quiet()
         .unwrap();
     assert_eq!(st.code(), Some(0));
     assert_eq!(before, std::fs::read(out.join("sweep.csv")).unwrap());
@@ -240,7 +240,7 @@ fn bad_input_to_the_plan_commands_is_named_and_exits_2() {
     assert!(err.contains("no plan"), "{err}");
     let plan = p;
     let mut st = sweep(&scene, &["time.end=1e-4,2e-4"], &plan, true);
-    assert!(st.status().unwrap().success());
+    assert!(st.quiet().unwrap().success());
     let (code, err) = stderr_of(verify().arg("task").arg(&plan).args(["--index", "2"]));
     assert_eq!(code, Some(2));
     assert!(err.contains("the plan has 2 task(s), 0 to 1"), "{err}");

@@ -2,6 +2,8 @@
 //! outright (SIGKILL) is continued with `run --resume DIR` and ends with exactly the outputs of a
 //! run never stopped.
 
+mod common;
+use common::Quiet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -55,7 +57,7 @@ fn run_to_end(scene: &Path, out: &Path) {
         .arg("--out")
         .arg(out)
         .args(["--threads", "2"])
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
 }
@@ -128,7 +130,7 @@ fn interrupted_or_killed_runs_resume_to_the_same_bits() {
             .arg("--resume")
             .arg(&out)
             .args(["--threads", "1"])
-            .status()
+            .quiet()
             .unwrap();
         assert!(st.success(), "{signal}: resume failed");
         let got = std::fs::read(out.join("timeseries.csv")).unwrap();
@@ -190,7 +192,7 @@ fn a_suite_stopped_by_sigterm_resumes_its_run_to_the_same_bits() {
         c
     };
     let whole = base.join("whole");
-    assert!(case(&whole).status().unwrap().success());
+    assert!(case(&whole).quiet().unwrap().success());
     let stopped = base.join("stopped");
     let mut child = case(&stopped).spawn().unwrap();
     wait_for_checkpoint(&mut child, || {
@@ -210,7 +212,7 @@ fn a_suite_stopped_by_sigterm_resumes_its_run_to_the_same_bits() {
         run_files(&stopped.join("cube_drop"))
     );
     // the same command again resumes the stopped run and runs the rest
-    assert!(case(&stopped).status().unwrap().success());
+    assert!(case(&stopped).quiet().unwrap().success());
     let (a, b) = (
         run_files(&whole.join("cube_drop")),
         run_files(&stopped.join("cube_drop")),

@@ -1,6 +1,9 @@
 //! The accuracy–cost study at its reduced grid: every point runs in its own process, is
 //! measured against its analytic reference, and the report is written.
 
+mod common;
+use common::Quiet;
+
 #[test]
 fn reduced_accuracy_cost_study_runs_and_reports() {
     let out = std::env::temp_dir().join(format!("verify-study-{}", std::process::id()));
@@ -16,7 +19,7 @@ fn reduced_accuracy_cost_study_runs_and_reports() {
             "--out",
         ])
         .arg(&out)
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     let text = std::fs::read_to_string(out.join("points.csv")).unwrap();
@@ -70,7 +73,7 @@ fn plan_of_the_same_study_collects_the_same_points(out: &std::path::Path, serial
         .args(["plan", "study", "--grid", "reduced", "--out"])
         .arg(out)
         .stdout(std::process::Stdio::null())
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     let plan: serde_json::Value =
@@ -90,7 +93,7 @@ fn plan_of_the_same_study_collects_the_same_points(out: &std::path::Path, serial
             .arg(out)
             .args(["--index", &i.to_string(), "--threads", "2"])
             .stderr(std::process::Stdio::null())
-            .status()
+            .quiet()
             .unwrap();
         assert!(st.success(), "task {i}");
     }
@@ -98,7 +101,7 @@ fn plan_of_the_same_study_collects_the_same_points(out: &std::path::Path, serial
         out.join(redo).join("run_info.json").exists(),
         "task {k} ran"
     );
-    let st = verify().arg("collect").arg(out).status().unwrap();
+    let st = verify().arg("collect").arg(out).quiet().unwrap();
     assert_eq!(st.code(), Some(0));
     let collected = std::fs::read_to_string(out.join("points.csv")).unwrap();
     let (a, b): (Vec<&str>, Vec<&str>) = (serial.lines().collect(), collected.lines().collect());

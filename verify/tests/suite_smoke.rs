@@ -2,6 +2,8 @@
 //! stated tolerances, the summary must match its snapshot (rounded to the digits that are stable
 //! across machines), reports must redraw without simulating, and finished runs are reused.
 
+mod common;
+use common::Quiet;
 use std::path::PathBuf;
 use verify::suite::runner::{self, SuiteOptions};
 use verify::suite::{Case, Fidelity, Metric};
@@ -350,7 +352,7 @@ fn compare_flags_a_worse_metric_and_the_cli_exits_4() {
     let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
         .args(["case", "cube_drop", "--fidelity", "smoke", "--out"])
         .arg(&out)
-        .status()
+        .quiet()
         .unwrap();
     assert!(st.success());
     let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
@@ -373,7 +375,7 @@ fn compare_flags_a_worse_metric_and_the_cli_exits_4() {
         .arg(&out)
         .arg("--compare")
         .arg(out.join("summary.csv"))
-        .status()
+        .quiet()
         .unwrap();
     assert_eq!(st.code(), Some(0));
     let _ = std::fs::remove_dir_all(&dir);

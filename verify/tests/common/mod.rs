@@ -1,6 +1,26 @@
-//! What several test files share: the `verify` binary and a small scene.
+//! What several test files share: the `verify` binary, a small scene, and a quiet way to run a
+//! command. (Each test file uses some of them.)
+#![allow(dead_code)]
 
-use std::process::Command;
+use std::process::{Command, ExitStatus};
+
+/// Runs a command with its output captured instead of inherited, so the test log stays quiet;
+/// when the command fails, its stderr goes to the test's own (captured) output, which the
+/// harness shows with the failure.
+pub trait Quiet {
+    /// Like `status()`, without printing the command's output.
+    fn quiet(&mut self) -> std::io::Result<ExitStatus>;
+}
+
+impl Quiet for Command {
+    fn quiet(&mut self) -> std::io::Result<ExitStatus> {
+        let out = self.output()?;
+        if !out.status.success() {
+            eprintln!("{}", String::from_utf8_lossy(&out.stderr));
+        }
+        Ok(out.status)
+    }
+}
 
 /// The `verify` binary of this build.
 pub fn verify() -> Command {

@@ -27,8 +27,9 @@ use std::path::{Path, PathBuf};
 pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
-    /// The default of `verify all`: resolves the physics; the whole suite takes about ten hours
-    /// on 2 cores (measured: 4.5 h, and water–oil–Teflon at the oil's real viscosity ~5 h).
+    /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes about
+    /// 6.5 h of one thread — the committed runs' own wall times, each on one thread (3.3 h on 2
+    /// cores, two runs at a time); finished runs are reused, so `all` then only re-reports.
     Standard,
     /// The papers' particle counts and time steps.
     Paper,

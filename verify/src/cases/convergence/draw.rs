@@ -45,15 +45,16 @@ fn error_against_spacing(all: &[ErrorSeries], dir: &Path) -> anyhow::Result<()> 
         .collect();
     if let Some((h0, e0)) = anchor {
         let lo = spacings.iter().copied().fold(f64::INFINITY, f64::min);
-        for order in [1.0, 2.0] {
+        // two colours beyond the metrics' so the slopes tell apart (dashed: a reference)
+        for (k, order) in [1.0, 2.0].into_iter().enumerate() {
             series.push(Series {
-                label: format!("slope {order:.0}"),
+                label: format!("slope {order:.0} (error ∝ l0^{order:.0})"),
                 points: [lo, h0]
                     .iter()
                     .map(|&h| log((h, e0.abs() * (h / h0).powf(order))))
                     .collect(),
                 kind: SeriesKind::Dashed,
-                color: 0,
+                color: all.len() + 1 + k,
             });
         }
     }
@@ -106,19 +107,23 @@ fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
 }
 
 /// The drop's table: R/l0, particles, period, error, decay rate and its ratio to Lamb's with
-/// the physical ν alone, wall time.
+/// the physical ν alone (all from Q2), the same from the z-extent, wall time.
 fn drop_table(drops: &[DropPoint]) -> String {
     let mut s = String::from(
-        "| R/l0 | l0 [µm] | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| R/l0 | l0 [µm] | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for d in drops {
         let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
             (f.period_s, f.damping_rate_per_s, f.offset)
         });
+        let (pe, ge) = d
+            .extent_fit
+            .as_ref()
+            .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
         let _ = writeln!(
             s,
-            "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
             d.r_over_l0,
             d.run.info.scene.discretisation.l0 * 1e6,
             d.run.info.fluid_particles,
@@ -129,6 +134,9 @@ fn drop_table(drops: &[DropPoint]) -> String {
             g / d.lamb_physical_per_s,
             g / d.lamb_with_av_per_s,
             b,
+            pe * 1e3,
+            100.0 * (pe / d.rayleigh_period_s - 1.0),
+            ge,
             d.run.info.wall_time_s
         );
     }

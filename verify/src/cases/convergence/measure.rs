@@ -28,6 +28,9 @@ pub struct DropPoint<'r> {
     pub series: (Vec<f64>, Vec<f64>),
     /// The damped cosine fitted to Q2 from [`FIT_FROM_S`], or why it failed.
     pub fit: Result<OscillationFit, String>,
+    /// The damped cosine fitted to the z-extent (the outermost particles) from [`FIT_FROM_S`]:
+    /// the same mode seen by the surface, beside the volume average Q2.
+    pub extent_fit: Result<OscillationFit, String>,
 }
 
 /// A cap at one angle and resolution.
@@ -99,6 +102,12 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
     let from = t.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(t.len());
     let n = t.len().min(q2.len()).max(from);
     let series = (t[from..n].to_vec(), q2[from..n].to_vec());
+    let ts = run.timeseries.run_column(RunColumn::Time);
+    let extent = run
+        .timeseries
+        .liquid_column(&liquid.name, LiquidColumn::Extent(Axis::Z));
+    let efrom = ts.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(ts.len());
+    let en = ts.len().min(extent.len()).max(efrom);
     DropPoint {
         run,
         r_over_l0: RADIUS_M / scene.discretisation.l0,
@@ -111,6 +120,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
             radius,
         ),
         fit: fit_damped_cosine(&series.0, &series.1),
+        extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
     }
 }

@@ -217,6 +217,40 @@ fn check_refuses_what_run_refuses() {
 }
 
 #[test]
+fn slips_in_names_and_units_are_named() {
+    let dir = tmp("slips");
+    // a liquid named in the wrong case: refused, with the name meant
+    let scene = scene_file(
+        &dir,
+        &SMALL.replace("liquid = \"matte\"", "liquid = \"Matte\""),
+    );
+    let out = verify().arg("check").arg(&scene).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("did you mean \"matte\""), "{err}");
+    // a finished run is not resumed: the message says it is finished
+    let scene = scene_file(&dir, SMALL);
+    let run = dir.join("run");
+    assert!(verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&run)
+        .quiet()
+        .unwrap()
+        .success());
+    let again = verify()
+        .arg("run")
+        .arg("--resume")
+        .arg(&run)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&again.stderr);
+    assert_eq!(again.status.code(), Some(3), "{err}");
+    assert!(err.contains("is finished: completed"), "{err}");
+}
+
+#[test]
 fn a_run_keeps_its_findings_in_its_record() {
     let dir = tmp("warned");
     let scene = scene_file(&dir, SMALL);

@@ -8,6 +8,7 @@
 //! All particles sit on one simple cubic lattice with spacing `l0` whose sites are at
 //! `(i + ½, j + ½, k + ½) l0` for integers `i, j, k`; a body takes the sites inside its shape.
 
+mod names;
 mod periodic;
 mod shapes;
 mod validate;

@@ -394,7 +394,11 @@ fn materials(s: &Scene) -> R {
                 return Err(SceneError::invalid(
                     field,
                     liquid,
-                    "no [[liquid]] has this name",
+                    super::names::no_such(
+                        "liquid",
+                        liquid,
+                        s.liquids.iter().map(|l| l.name.as_str()),
+                    ),
                 ));
             }
             if !(angle.is_finite() && angle > 0.0 && angle < 180.0) {
@@ -414,7 +418,11 @@ fn materials(s: &Scene) -> R {
                 return Err(SceneError::invalid(
                     format!("{field}.liquids"),
                     name,
-                    "no [[liquid]] has this name",
+                    super::names::no_such(
+                        "liquid",
+                        name,
+                        s.liquids.iter().map(|l| l.name.as_str()),
+                    ),
                 ));
             }
         }
@@ -474,7 +482,11 @@ fn bodies(s: &Scene) -> R {
                     return Err(SceneError::invalid(
                         format!("{p}.liquid"),
                         l,
-                        "no [[liquid]] has this name",
+                        super::names::no_such(
+                            "liquid",
+                            l,
+                            s.liquids.iter().map(|l| l.name.as_str()),
+                        ),
                     ));
                 }
             }
@@ -484,7 +496,11 @@ fn bodies(s: &Scene) -> R {
                         return Err(SceneError::invalid(
                             format!("{p}.cut.liquids"),
                             l,
-                            "no [[liquid]] has this name",
+                            super::names::no_such(
+                                "liquid",
+                                l,
+                                s.liquids.iter().map(|l| l.name.as_str()),
+                            ),
                         ));
                     }
                 }
@@ -541,7 +557,7 @@ fn walls(s: &Scene) -> R {
             return Err(SceneError::invalid(
                 format!("{p}.solid"),
                 &w.solid,
-                "no [[solid]] has this name",
+                super::names::no_such("solid", &w.solid, s.solids.iter().map(|x| x.name.as_str())),
             ));
         }
         check_shape(&p, w.shape.checks())?;

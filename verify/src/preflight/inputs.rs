@@ -193,9 +193,20 @@ pub fn interfacial_tension(
     })
 }
 
-/// θ within [`CONTACT_ANGLE_MARGIN_DEG`] of 0° or 180°.
+/// θ typed in radians (in (0, π] with a fractional part: 1.2217 for 70°), or within
+/// [`CONTACT_ANGLE_MARGIN_DEG`] of 0° or 180°.
 pub fn contact_angle(subject: &str, theta_deg: f64) -> Option<Finding> {
     let m = CONTACT_ANGLE_MARGIN_DEG;
+    if theta_deg > 0.0 && theta_deg <= std::f64::consts::PI && theta_deg.fract() != 0.0 {
+        let deg = theta_deg.to_degrees();
+        return Some(finding(
+            Check::ContactAngle,
+            subject,
+            format!("θ = {theta_deg}° is between 0 and π with a fractional part: {theta_deg} rad would be {deg:.1}°"),
+            "an angle in radians typed into a field in degrees (contact angles are in degrees, measured inside the liquid)".into(),
+            format!("θ = {deg:.1} (degrees), if {theta_deg} was meant in radians"),
+        ));
+    }
     let (what, fix) = if theta_deg < m {
         ("complete wetting: the liquid spreads into a film as thin as the particles allow, whose angle the particles cannot show", format!("θ ≥ {m}°"))
     } else if theta_deg > 180.0 - m {
@@ -261,6 +272,19 @@ mod tests {
         assert!(f.found.contains("do not stick"), "{f}");
         assert!(interfacial_tension("a/b", 0.79, Some((0.4, 0.4))).is_none());
         assert!(interfacial_tension("w/o", 0.052, Some((0.0728, 0.0201))).is_none());
+    }
+
+    #[test]
+    fn an_angle_in_radians_is_caught_with_the_value_in_degrees() {
+        let f = contact_angle("water on teflon", 1.2217).expect("70° typed in radians");
+        assert!(f.cause.contains("radians") && f.fix.contains("70"), "{f}");
+        // 30° in radians (π/6) is also below the 1° margin: named as radians first
+        assert!(contact_angle("w", std::f64::consts::FRAC_PI_6)
+            .unwrap()
+            .cause
+            .contains("radians"));
+        // whole degrees in the same range are degrees (2° and 3° are rare but possible)
+        assert!(contact_angle("w", 3.0).is_none());
     }
 
     #[test]

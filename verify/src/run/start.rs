@@ -83,6 +83,20 @@ impl<'a> Run<'a> {
         let mut info = RunInfo::read(out).map_err(|e| {
             RunError::Output(format!("no run to resume in {} ({e})", out.display()))
         })?;
+        if matches!(info.status, Status::Completed | Status::Failed) {
+            let how = if info.status == Status::Completed {
+                "completed".to_string()
+            } else {
+                format!("failed ({})", info.error.clone().unwrap_or_default())
+            };
+            return Err(RunError::Output(format!(
+                "nothing to resume: the run in {} is finished: {how} at t = {:e} s after {} steps; \
+                 `run SCENE --out DIR --force` runs it again",
+                out.display(),
+                info.simulated_time_s,
+                info.steps
+            )));
+        }
         let (sim, output) = checkpoint::restore(out)?;
         info.status = Status::Running;
         info.threads = threads;

@@ -119,7 +119,22 @@ pub fn apply(scene: &Scene, overrides: &[SceneOverride]) -> anyhow::Result<Scene
         *v = o.value.clone();
     }
     let text = toml::to_string(&root)?;
-    Scene::from_toml_str(&text).map_err(|e| anyhow::anyhow!("--set: {e}"))
+    Scene::from_toml_str(&text).map_err(|e| {
+        // an unknown key is reported by the key the user typed, not by a line of the
+        // generated scene
+        let msg = e.to_string();
+        let unknown = |seg: &str| msg.contains(&format!("unknown field `{seg}`"));
+        match overrides.iter().find(|o| o.key.split('.').any(unknown)) {
+            Some(o) => {
+                let why = msg
+                    .lines()
+                    .find(|l| l.contains("unknown field"))
+                    .unwrap_or(&msg);
+                anyhow::anyhow!("--set {}: {}", o.key, why.trim())
+            }
+            None => anyhow::anyhow!("--set: {e}"),
+        }
+    })
 }
 
 #[cfg(test)]
@@ -128,6 +143,18 @@ mod tests {
 
     fn scene() -> Scene {
         Scene::from_toml_str(include_str!("../../../scenes/cube_drop.toml")).expect("scene")
+    }
+
+    #[test]
+    fn a_misspelt_key_is_reported_as_typed() {
+        let o = parse_values("liquid.0.surface_tensio=0.3").unwrap();
+        let e = apply(&scene(), &o).unwrap_err().to_string();
+        assert!(
+            e.starts_with("--set liquid.0.surface_tensio: unknown field `surface_tensio`")
+                && e.contains("`surface_tension`")
+                && !e.contains("line"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -187,7 +187,7 @@ impl Case for Convergence {
         let why = match f {
             Fidelity::Smoke => "seconds per run: that the case runs and fits",
             Fidelity::Standard => {
-                "44 min of one thread in all (measured, each run on one thread beside another: the drops 32 s, 3.6 min and 20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min)"
+                "about 45 min of one thread in all (measured twice, 40 and 44 min, each run on one thread beside another: the drops 0.5, 4–5 and 16–20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min)"
             }
             Fidelity::Paper => "one finer point of each beyond standard",
         };

@@ -643,9 +643,9 @@ fn report(out: &Path) -> anyhow::Result<i32> {
 }
 
 /// `verify check`: the findings, the step estimate and a timed sample of `sample_steps` steps.
-/// Exit as `run` would: 2 when the scene cannot be built (e.g. overlapping bodies), 1 when the
-/// sample stops on an error, 2 under `strict` with findings; the findings are named first, as
-/// the likely cause of a failing sample.
+/// Exit as `run` would: 2 when the scene cannot be built (e.g. overlapping bodies) and under
+/// `strict` with findings, else 1 when the sample stops on an error; the first finding is named
+/// with a failing sample, as its likely cause.
 fn check_scene(
     path: &Path,
     strict: bool,
@@ -703,7 +703,8 @@ fn check_scene(
                 });
                 if built {
                     println!("sample: the run fails{findings_first}: {e:#}");
-                    return Ok(1);
+                    // `--strict` refuses the scene before any step, as `run --strict` does
+                    return Ok(if strict && !findings.is_empty() { 2 } else { 1 });
                 }
                 println!("the scene cannot be built: {e:#}");
                 return Ok(2);

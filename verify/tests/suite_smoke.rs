@@ -158,6 +158,14 @@ fn drop_oscillation_smoke() {
 }
 
 #[test]
+fn known_misses_name_real_cases() {
+    let names: Vec<&str> = verify::cases::all().iter().map(|c| c.name()).collect();
+    for k in verify::report::known_misses::all() {
+        assert!(names.contains(&k.case.as_str()), "{}", k.case);
+    }
+}
+
+#[test]
 fn convergence_smoke() {
     let (m, out) = run("convergence");
     // every run is measured (a failed fit or cap gives NaN) and each metric's order is

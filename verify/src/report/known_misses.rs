@@ -56,11 +56,10 @@ mod tests {
     use crate::suite::Tolerance;
 
     #[test]
-    fn the_list_parses_and_names_real_cases() {
-        let names: Vec<&str> = crate::cases::all().iter().map(|c| c.name()).collect();
+    fn the_list_parses_and_every_entry_says_why() {
+        // that each names a real case: tests/suite_smoke.rs (cases sit above report)
         assert!(!all().is_empty());
         for k in all() {
-            assert!(names.contains(&k.case.as_str()), "{}", k.case);
             assert!(!k.metrics.is_empty() && !k.reason.is_empty() && !k.r#where.is_empty());
         }
     }

@@ -11,7 +11,7 @@ cat > "$dir/scene.toml" <<'TOML'
 description = "a small matte drop relaxing (Python example)"
 [discretisation]
 l0 = 1.0e-4
-sound_speed = 12.0
+sound_speed = 12.5
 [time]
 end = 4.0e-5
 output_interval = 1.0e-5
@@ -26,8 +26,9 @@ surface_tension = 0.4
 [[body]]
 name = "drop"
 liquid = "matte"
-shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 4.0e-4 }
+shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 8.0e-4 }
 TOML
-cargo run --release -q -p verify -- run "$dir/scene.toml" --out "$dir/run" --vtk 2
+# --strict: the example passes its own pre-flight (8 spacings per radius, c by the cohesion rule)
+cargo run --release -q -p verify -- run "$dir/scene.toml" --out "$dir/run" --vtk 2 --strict
 python3 scripts/drop_height.py "$dir/run" --png "$dir/drop_height.png"
 test -s "$dir/drop_height.png"

@@ -250,6 +250,46 @@ fn slips_in_names_and_units_are_named() {
     assert!(err.contains("is finished: completed"), "{err}");
 }
 
+/// README's "Your first drop" as written: the same commands, on the same scene, end to end.
+#[test]
+fn the_readme_walkthrough_works_as_written() {
+    let readme = include_str!("../../README.md");
+    for line in [
+        "target/release/verify check scenes/drop_on_plate.toml",
+        "target/release/verify run scenes/drop_on_plate.toml --out /tmp/first --vtk 10",
+    ] {
+        assert!(readme.contains(line), "README no longer says `{line}`");
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let scene = root.join("scenes/drop_on_plate.toml");
+    let check = verify().arg("check").arg(&scene).output().unwrap();
+    let text = String::from_utf8_lossy(&check.stdout);
+    assert!(
+        check.status.success() && text.contains("no findings"),
+        "{text}"
+    );
+    let out = tmp("walkthrough");
+    assert!(verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .arg("--vtk")
+        .arg("10")
+        .quiet()
+        .unwrap()
+        .success());
+    for f in [
+        "timeseries.csv",
+        "run_info.json",
+        "particles.pvd",
+        "walls.vtu",
+    ] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 #[test]
 fn a_run_keeps_its_findings_in_its_record() {
     let dir = tmp("warned");

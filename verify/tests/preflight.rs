@@ -134,3 +134,15 @@ fn a_water_drop_typed_in_mn_per_m_is_refused_under_strict() {
     );
     assert!(!out.exists(), "refused before the output folder is made");
 }
+
+/// The scene of `scripts/python_example.sh` (a documented example, run by the nightly job with
+/// `--strict`) trips no check.
+#[test]
+fn the_python_example_passes_its_own_preflight() {
+    let script = include_str!("../../scripts/python_example.sh");
+    let start = script.find("<<'TOML'\n").expect("the example's scene") + "<<'TOML'\n".len();
+    let end = start + script[start..].find("\nTOML\n").expect("its end");
+    let scene = solver::Scene::from_toml_str(&script[start..end]).expect("a valid scene");
+    let findings = preflight::check(&scene);
+    assert!(findings.is_empty(), "{findings:?}");
+}

@@ -18,5 +18,6 @@ pub mod plan;
 pub mod preflight;
 pub mod report;
 pub mod run;
+pub mod run_measures;
 pub mod study;
 pub mod suite;

@@ -159,6 +159,13 @@ impl RunArgs {
                     info.wall_time_s,
                     info.particle_steps_per_second
                 );
+                // with snapshots, the run is measured as `verify measure` would (a measurement
+                // that fails is said, not an error of the run)
+                if self.vtk.is_some() {
+                    if let Err(e) = measure_run(&opts.out_dir) {
+                        eprintln!("measure: {e:#}");
+                    }
+                }
                 0
             }
             Err(e) => {
@@ -234,6 +241,13 @@ enum Command {
         /// Orders m of the potential's zero at r_e (1: Kondo 2007; 2, 3: smoother).
         #[arg(long, value_delimiter = ',', default_value = "1")]
         order: Vec<u8>,
+    },
+    /// Measure a finished run like the cases do (height, wetted radius, contact angle, shape
+    /// moments per liquid against time, from its `--vtk` snapshots) → RUN_DIR/measures.csv and
+    /// plots, with the Young–Laplace equilibrium where one liquid rests on one wall.
+    Measure {
+        /// The run's output folder.
+        run_dir: PathBuf,
     },
     /// Surface energy γ and surface stress f of a flat lattice surface (f/γ: a liquid has 1),
     /// for the pairwise potential (r_e/l0, order) and the square-gradient energy (kernel, h/l0);
@@ -502,6 +516,7 @@ fn main() {
             );
             0
         }
+        Command::Measure { run_dir } => exit_of(measure_run(&run_dir)),
         Command::SurfaceStress {
             kernel,
             h_over_l0,
@@ -972,4 +987,33 @@ fn surface_stress_settings(
         }
     }
     out
+}
+
+/// `verify measure`: the measures of a user's run, and where they went.
+fn measure_run(dir: &Path) -> anyhow::Result<i32> {
+    let m = verify::run_measures::write(dir)?;
+    if let Some(last) = m.rows.last() {
+        eprintln!(
+            "measured {} snapshots: at t = {:.4e} s height {:.4} mm, wetted radius {:.4} mm, angle {:.1}°",
+            m.rows.len() / m.liquids.len().max(1),
+            last.time_s,
+            last.height_m * 1e3,
+            last.wetted_radius_m * 1e3,
+            last.angle_deg
+        );
+    }
+    if let Some((h, a, theta)) = m.equilibrium {
+        eprintln!(
+            "Young–Laplace for the scene's volume: height {:.4} mm, wetted radius {:.4} mm at {theta}°",
+            h * 1e3,
+            a * 1e3
+        );
+    }
+    eprintln!(
+        "wrote {}, {} and {}",
+        dir.join("measures.csv").display(),
+        dir.join("measures_size.png").display(),
+        dir.join("measures_angle.png").display()
+    );
+    Ok(0)
 }

@@ -250,13 +250,15 @@ fn slips_in_names_and_units_are_named() {
     assert!(err.contains("is finished: completed"), "{err}");
 }
 
-/// README's "Your first drop" as written: the same commands, on the same scene, end to end.
+/// README's "Your first drop" as written: the same commands, on the same scene, end to end,
+/// down to the measures of the run.
 #[test]
 fn the_readme_walkthrough_works_as_written() {
     let readme = include_str!("../../README.md");
     for line in [
         "target/release/verify check scenes/drop_on_plate.toml",
         "target/release/verify run scenes/drop_on_plate.toml --out /tmp/first --vtk 10",
+        "target/release/verify measure /tmp/first",
     ] {
         assert!(readme.contains(line), "README no longer says `{line}`");
     }
@@ -285,6 +287,29 @@ fn the_readme_walkthrough_works_as_written() {
         "particles.pvd",
         "walls.vtu",
     ] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+    let measure = verify().arg("measure").arg(&out).output().unwrap();
+    let err = String::from_utf8_lossy(&measure.stderr);
+    assert!(measure.status.success(), "{err}");
+    assert!(
+        err.contains("Young–Laplace for the scene's volume"),
+        "{err}"
+    );
+    let csv = std::fs::read_to_string(out.join("measures.csv")).unwrap();
+    // the header and one row per snapshot (11: t = 0, 5, …, 50 ms), the last one on the plate
+    // with a wetted radius, a fitted angle and its bound
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(rows.len(), 12, "{csv}");
+    let last: Vec<&str> = rows[11].split(',').collect();
+    for col in [7, 9, 10] {
+        let v = last[col];
+        assert!(
+            v.parse::<f64>().is_ok_and(f64::is_finite),
+            "column {col}: {v}"
+        );
+    }
+    for f in ["measures_size.png", "measures_angle.png"] {
         assert!(out.join(f).exists(), "{f}");
     }
     let _ = std::fs::remove_dir_all(&out);

@@ -7,6 +7,7 @@ pub mod machine;
 pub mod run_info;
 pub mod timeseries;
 pub mod vtk;
+pub mod vtk_read;
 
 pub use error::RunError;
 

@@ -315,6 +315,30 @@ fn the_readme_walkthrough_works_as_written() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// The documented diagnostics and listing commands run and print their tables.
+#[test]
+fn diagnostics_and_list_print_their_tables() {
+    for (args, expect) in [
+        (vec!["list"], "convergence"),
+        (
+            vec!["lattice-moduli", "--h", "1.05", "--re", "4.2"],
+            "G44 total",
+        ),
+        (vec!["surface-stress"], "potential f/γ"),
+        (
+            vec!["surface-stress", "--kernel", "quintic-spline", "--h", "1.3"],
+            "| quintic_spline | 1.3 |",
+        ),
+    ] {
+        let out = verify().args(&args).output().unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success() && text.contains(expect),
+            "{args:?}: {text}"
+        );
+    }
+}
+
 #[test]
 fn a_run_keeps_its_findings_in_its_record() {
     let dir = tmp("warned");

@@ -790,32 +790,17 @@ fn slab_tension_table(
 ) -> anyhow::Result<i32> {
     let sc = load_scene(scene)?;
     let d = &sc.discretisation;
-    let or = |v: &[f64], x: f64| if v.is_empty() { vec![x] } else { v.to_vec() };
-    let kernels: Vec<KernelKind> = if kernel.is_empty() {
-        vec![d.kernel]
-    } else {
-        kernel.into_iter().map(KernelKind::from).collect()
-    };
-    let orders = if order.is_empty() {
-        vec![d.potential_order]
-    } else {
-        order
-    };
-    let mut settings = Vec::new();
-    for &kernel in &kernels {
-        for &h in &or(&h_over_l0, d.h_over_l0) {
-            for &re in &or(&re_over_l0, d.re_over_l0) {
-                for &order in &orders {
-                    settings.push(slab_tension::Setting {
-                        kernel,
-                        h_over_l0: h,
-                        re_over_l0: re,
-                        order,
-                    });
-                }
-            }
-        }
-    }
+    let defaults = (d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
+    let settings: Vec<slab_tension::Setting> =
+        settings_product((kernel, h_over_l0, re_over_l0, order), defaults)
+            .into_iter()
+            .map(|(kernel, h, re, order)| slab_tension::Setting {
+                kernel,
+                h_over_l0: h,
+                re_over_l0: re,
+                order,
+            })
+            .collect();
     print!("{}", slab_tension::table(&sc, &settings, design)?);
     Ok(0)
 }
@@ -947,17 +932,17 @@ fn sweep(scene: &Path, set: &[String], out: &Path, threads: Option<usize>) -> an
     collect(out)
 }
 
-/// The settings of `surface-stress`: the product of the lists given, each defaulting to the
-/// study's values; with no list given, the study's variants themselves.
+/// The settings of `surface-stress`: with no list given, the study's variants; else the
+/// product of the lists given, each defaulting to the study's default.
 fn surface_stress_settings(
     kernel: Vec<KernelArg>,
     h_over_l0: Vec<f64>,
     re_over_l0: Vec<f64>,
     order: Vec<u8>,
 ) -> Vec<(KernelKind, f64, f64, u8)> {
-    let variants = verify::study::Grid::Standard.variants();
     if kernel.is_empty() && h_over_l0.is_empty() && re_over_l0.is_empty() && order.is_empty() {
-        let mut v: Vec<(KernelKind, f64, f64, u8)> = variants
+        let mut v: Vec<(KernelKind, f64, f64, u8)> = verify::study::Grid::Standard
+            .variants()
             .iter()
             .map(|v| (v.kernel, v.h_over_l0, v.re_over_l0, v.potential_order))
             .collect();
@@ -965,21 +950,32 @@ fn surface_stress_settings(
         return v;
     }
     let d = verify::study::Variant::DEFAULT;
+    let defaults = (d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
+    settings_product((kernel, h_over_l0, re_over_l0, order), defaults)
+}
+
+/// Every combination (kernel, h/l0, r_e/l0, order) of the lists given; an empty list stands
+/// for its value in `defaults`.
+fn settings_product(
+    (kernel, h_over_l0, re_over_l0, order): (Vec<KernelArg>, Vec<f64>, Vec<f64>, Vec<u8>),
+    defaults: (KernelKind, f64, f64, u8),
+) -> Vec<(KernelKind, f64, f64, u8)> {
     let or = |v: Vec<f64>, x: f64| if v.is_empty() { vec![x] } else { v };
     let kernels: Vec<KernelKind> = if kernel.is_empty() {
-        vec![d.kernel]
+        vec![defaults.0]
     } else {
         kernel.into_iter().map(KernelKind::from).collect()
     };
+    let (hs, res) = (or(h_over_l0, defaults.1), or(re_over_l0, defaults.2));
     let orders = if order.is_empty() {
-        vec![d.potential_order]
+        vec![defaults.3]
     } else {
         order
     };
     let mut out = Vec::new();
     for &k in &kernels {
-        for &h in &or(h_over_l0.clone(), d.h_over_l0) {
-            for &re in &or(re_over_l0.clone(), d.re_over_l0) {
+        for &h in &hs {
+            for &re in &res {
                 for &m in &orders {
                     out.push((k, h, re, m));
                 }

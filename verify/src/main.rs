@@ -187,6 +187,24 @@ impl RunArgs {
     }
 }
 
+/// Lists of discretisation settings whose every combination a diagnostic tabulates (an empty
+/// list: the command's default value).
+#[derive(clap::Args)]
+struct SettingLists {
+    /// Kernels.
+    #[arg(long, value_enum, value_delimiter = ',')]
+    kernel: Vec<KernelArg>,
+    /// Smoothing lengths h/l0.
+    #[arg(long = "h", value_delimiter = ',')]
+    h_over_l0: Vec<f64>,
+    /// Potential cut-offs r_e/l0.
+    #[arg(long = "re", value_delimiter = ',')]
+    re_over_l0: Vec<f64>,
+    /// Orders m of the potential's zero at r_e (1: Kondo 2007; 2, 3: smoother).
+    #[arg(long, value_delimiter = ',')]
+    order: Vec<u8>,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene file (or continue a stopped run with --resume DIR).
@@ -251,20 +269,11 @@ enum Command {
     },
     /// Surface energy γ and surface stress f of a flat lattice surface (f/γ: a liquid has 1),
     /// for the pairwise potential (r_e/l0, order) and the square-gradient energy (kernel, h/l0);
-    /// default: the accuracy–cost study's variants. Give all four lists for their product.
+    /// default: the accuracy–cost study's variants; with any list, the product of the lists (a
+    /// list not given: the study's default value).
     SurfaceStress {
-        /// Kernels.
-        #[arg(long, value_enum, value_delimiter = ',')]
-        kernel: Vec<KernelArg>,
-        /// Smoothing lengths h/l0.
-        #[arg(long = "h", value_delimiter = ',')]
-        h_over_l0: Vec<f64>,
-        /// Potential cut-offs r_e/l0.
-        #[arg(long = "re", value_delimiter = ',')]
-        re_over_l0: Vec<f64>,
-        /// Orders m of the potential's zero at r_e (1: Kondo 2007).
-        #[arg(long, value_delimiter = ',')]
-        order: Vec<u8>,
+        #[command(flatten)]
+        lists: SettingLists,
     },
     /// The surface tension of each liquid of a scene as the relaxed particle liquid has it:
     /// a periodic slab relaxed under the scene's forces, σ from the pair-force virial
@@ -272,18 +281,8 @@ enum Command {
     SlabTension {
         /// The scene (its liquids, sound speed, density control and viscosities are used).
         scene: PathBuf,
-        /// Kernels.
-        #[arg(long, value_enum, value_delimiter = ',')]
-        kernel: Vec<KernelArg>,
-        /// Smoothing lengths h/l0.
-        #[arg(long = "h", value_delimiter = ',')]
-        h_over_l0: Vec<f64>,
-        /// Potential cut-offs r_e/l0.
-        #[arg(long = "re", value_delimiter = ',')]
-        re_over_l0: Vec<f64>,
-        /// Orders m of the potential's zero at r_e.
-        #[arg(long, value_delimiter = ',')]
-        order: Vec<u8>,
+        #[command(flatten)]
+        lists: SettingLists,
         /// The slab's thickness over l0 (a convergence check of the measurement).
         #[arg(long, default_value_t = SlabDesign::default().thickness_over_l0)]
         thickness_over_l0: f64,
@@ -517,22 +516,14 @@ fn main() {
             0
         }
         Command::Measure { run_dir } => exit_of(measure_run(&run_dir)),
-        Command::SurfaceStress {
-            kernel,
-            h_over_l0,
-            re_over_l0,
-            order,
-        } => {
-            let settings = surface_stress_settings(kernel, h_over_l0, re_over_l0, order);
+        Command::SurfaceStress { lists } => {
+            let settings = surface_stress_settings(lists);
             print!("{}", surface_stress::table(&settings));
             0
         }
         Command::SlabTension {
             scene,
-            kernel,
-            h_over_l0,
-            re_over_l0,
-            order,
+            lists,
             thickness_over_l0,
             crossings,
         } => {
@@ -542,9 +533,7 @@ fn main() {
                 averaged_crossings: crossings / 4.0,
                 ..SlabDesign::default()
             };
-            exit_of(slab_tension_table(
-                &scene, design, kernel, h_over_l0, re_over_l0, order,
-            ))
+            exit_of(slab_tension_table(&scene, design, lists))
         }
         Command::Study {
             which:
@@ -783,24 +772,20 @@ fn sample(scene: &solver::Scene, steps: u64) -> anyhow::Result<()> {
 fn slab_tension_table(
     scene: &Path,
     design: SlabDesign,
-    kernel: Vec<KernelArg>,
-    h_over_l0: Vec<f64>,
-    re_over_l0: Vec<f64>,
-    order: Vec<u8>,
+    lists: SettingLists,
 ) -> anyhow::Result<i32> {
     let sc = load_scene(scene)?;
     let d = &sc.discretisation;
     let defaults = (d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
-    let settings: Vec<slab_tension::Setting> =
-        settings_product((kernel, h_over_l0, re_over_l0, order), defaults)
-            .into_iter()
-            .map(|(kernel, h, re, order)| slab_tension::Setting {
-                kernel,
-                h_over_l0: h,
-                re_over_l0: re,
-                order,
-            })
-            .collect();
+    let settings: Vec<slab_tension::Setting> = settings_product(lists, defaults)
+        .into_iter()
+        .map(|(kernel, h, re, order)| slab_tension::Setting {
+            kernel,
+            h_over_l0: h,
+            re_over_l0: re,
+            order,
+        })
+        .collect();
     print!("{}", slab_tension::table(&sc, &settings, design)?);
     Ok(0)
 }
@@ -934,13 +919,13 @@ fn sweep(scene: &Path, set: &[String], out: &Path, threads: Option<usize>) -> an
 
 /// The settings of `surface-stress`: with no list given, the study's variants; else the
 /// product of the lists given, each defaulting to the study's default.
-fn surface_stress_settings(
-    kernel: Vec<KernelArg>,
-    h_over_l0: Vec<f64>,
-    re_over_l0: Vec<f64>,
-    order: Vec<u8>,
-) -> Vec<(KernelKind, f64, f64, u8)> {
-    if kernel.is_empty() && h_over_l0.is_empty() && re_over_l0.is_empty() && order.is_empty() {
+fn surface_stress_settings(lists: SettingLists) -> Vec<(KernelKind, f64, f64, u8)> {
+    let l = &lists;
+    if l.kernel.is_empty()
+        && l.h_over_l0.is_empty()
+        && l.re_over_l0.is_empty()
+        && l.order.is_empty()
+    {
         let mut v: Vec<(KernelKind, f64, f64, u8)> = verify::study::Grid::Standard
             .variants()
             .iter()
@@ -951,15 +936,21 @@ fn surface_stress_settings(
     }
     let d = verify::study::Variant::DEFAULT;
     let defaults = (d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order);
-    settings_product((kernel, h_over_l0, re_over_l0, order), defaults)
+    settings_product(lists, defaults)
 }
 
 /// Every combination (kernel, h/l0, r_e/l0, order) of the lists given; an empty list stands
 /// for its value in `defaults`.
 fn settings_product(
-    (kernel, h_over_l0, re_over_l0, order): (Vec<KernelArg>, Vec<f64>, Vec<f64>, Vec<u8>),
+    lists: SettingLists,
     defaults: (KernelKind, f64, f64, u8),
 ) -> Vec<(KernelKind, f64, f64, u8)> {
+    let SettingLists {
+        kernel,
+        h_over_l0,
+        re_over_l0,
+        order,
+    } = lists;
     let or = |v: Vec<f64>, x: f64| if v.is_empty() { vec![x] } else { v };
     let kernels: Vec<KernelKind> = if kernel.is_empty() {
         vec![defaults.0]

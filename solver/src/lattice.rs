@@ -2,7 +2,9 @@
 //! the density summation (docs/model.md §1) and normalise the interparticle potential (§4).
 
 use crate::kernel::Kernel;
+use crate::physics::forces::laminar_viscosity::MCG_FACTOR;
 use crate::physics::surface_tension::Kondo2007Potential;
+use crate::scene::LaminarForm;
 
 /// `Σ_j W(|r_ij|)` over a bulk lattice, self included [1/m³].
 ///
@@ -96,6 +98,45 @@ pub fn bulk_potential_sum(p: &Kondo2007Potential) -> f64 {
     bulk_sum(p, |r| p.p(r))
 }
 
+/// What the laminar term makes of a shear wave `v_x = U sin(k z)` on the undisturbed bulk
+/// lattice (every `V_j = l0³`): the ratio of the acceleration the pair loop sums there to the
+/// continuum's `−ν k² U sin(k z)` [-]. 1 for a consistent operator; below 1 the lattice
+/// viscosity is lower than the liquid's. Exact on the lattice for any wavenumber `k_per_m`
+/// [1/m] (the `sin(k z_ij)` part cancels by the lattice's symmetry); `h_m` [m] sets the
+/// Monaghan–Cleary–Gingold form's `η = 0.1 h`.
+pub fn laminar_shear_ratio<K: Kernel>(
+    kernel: &K,
+    l0: f64,
+    h_m: f64,
+    k_per_m: f64,
+    form: LaminarForm,
+) -> f64 {
+    let n = (kernel.support_m() / l0).ceil() as i64 + 1;
+    let eta2 = 0.01 * h_m * h_m;
+    let mut sum = 0.0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                if i == 0 && j == 0 && k == 0 {
+                    continue;
+                }
+                let (x, z) = (i as f64 * l0, k as f64 * l0);
+                let r2 = ((i * i + j * j + k * k) as f64) * l0 * l0;
+                let r = r2.sqrt();
+                let f = kernel.dw_dr(r) / r; // (dW/dr)/r [1/m⁵]
+                let shear = 1.0 - (k_per_m * z).cos();
+                sum += match form {
+                    // Eq. (11), Natsui 2021: a_x = 2ν Σ V_j (dW/dr / r) (v_i − v_j)
+                    LaminarForm::HuAdams => 2.0 * shear * f,
+                    // Monaghan 2005: a_x = 2(d+2) ν Σ V_j (v_ij·x_ij) x_ij,x (dW/dr / r)/(r² + η²)
+                    LaminarForm::MonaghanClearyGingold => MCG_FACTOR * shear * x * x * f / (r2 + eta2),
+                };
+            }
+        }
+    }
+    -sum * l0.powi(3) / (k_per_m * k_per_m)
+}
+
 /// The potential's virial sum `Σ_{j≠i} r_ij P'(r_ij)` over the bulk lattice [m³]: the
 /// potential's virial pressure is `C/(6 l0³)` times it (negative: cohesion).
 pub fn potential_virial_sum(p: &Kondo2007Potential) -> f64 {
@@ -123,6 +164,33 @@ fn bulk_sum(p: &Kondo2007Potential, f: impl Fn(f64) -> f64) -> f64 {
 mod tests {
     use super::*;
     use crate::kernel::WendlandC2;
+
+    #[test]
+    fn both_laminar_forms_tend_to_the_viscosity_as_the_kernel_covers_more_sites() {
+        // a long wave (1000 l0): the ratio is the lattice quadrature of the kernel's second
+        // (Hu & Adams) or fourth (Monaghan–Cleary–Gingold) moment against the continuum's
+        let l0 = 1e-4;
+        let k = std::f64::consts::TAU / (1000.0 * l0);
+        let ratio = |h_over_l0: f64, form| {
+            let h = h_over_l0 * l0;
+            laminar_shear_ratio(&WendlandC2::new(h), l0, h, k, form)
+        };
+        // at h = 2.5 l0 (~500 neighbours) both are within 2 % of the continuum (η² = (0.1 h)²
+        // takes about 1.7 % of the central form's near pairs); a wrong prefactor — 2(d+2)
+        // taken as d+2, or 2 dropped from Hu & Adams — would be off by a factor of two
+        for form in [LaminarForm::HuAdams, LaminarForm::MonaghanClearyGingold] {
+            let r = ratio(2.5, form);
+            assert!((r - 1.0).abs() < 0.02, "{form:?}: {r}");
+        }
+        // the central form's fourth moment converges from below as h grows: on the paper's
+        // lattice (h = 1.05 l0, 32 neighbours) it gives about two thirds of the viscosity
+        let mcg: Vec<f64> = [1.05, 1.3, 1.5, 2.0, 2.5]
+            .iter()
+            .map(|&h| ratio(h, LaminarForm::MonaghanClearyGingold))
+            .collect();
+        assert!(mcg.windows(2).all(|w| w[0] < w[1]), "{mcg:?}");
+        assert!(mcg[0] < 0.75, "{mcg:?}");
+    }
 
     #[test]
     fn lattice_kernel_sum_exceeds_one_at_small_h() {

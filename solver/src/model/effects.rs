@@ -1,7 +1,7 @@
 //! The effects built for a run, resolved from the scene's `[effects]`, `[density]` and walls.
 
 use crate::scene::{
-    DensityScheme, ImplicitViscosity, NegativePressure, Reinit, Scene, WallBoundary,
+    DensityScheme, ImplicitViscosity, LaminarForm, NegativePressure, Reinit, Scene, WallBoundary,
 };
 use serde::Serialize;
 
@@ -12,6 +12,8 @@ pub struct Effects {
     pub gravity: Option<[f64; 3]>,
     /// Laminar viscosity.
     pub laminar_viscosity: bool,
+    /// Its pair form.
+    pub laminar_form: LaminarForm,
     /// The laminar viscosity integrated implicitly, with this stopping rule (else explicitly,
     /// as a term of the pair loop).
     pub implicit_viscosity: Option<ImplicitViscosity>,
@@ -42,6 +44,7 @@ impl Effects {
         Effects {
             gravity: e.gravity,
             laminar_viscosity: e.laminar_viscosity,
+            laminar_form: e.laminar_form,
             implicit_viscosity: e.implicit_viscosity.filter(|_| e.laminar_viscosity),
             artificial_viscosity: e
                 .artificial_viscosity
@@ -69,6 +72,11 @@ impl Effects {
         self.laminar_viscosity && self.implicit_viscosity.is_none()
     }
 
+    /// Whether the pair loop's laminar term has the given form.
+    pub fn explicit_laminar(&self, form: LaminarForm) -> bool {
+        self.explicit_laminar_viscosity() && self.laminar_form == form
+    }
+
     /// Whether the density follows the continuity equation (else the summation).
     pub fn continuity(&self) -> bool {
         self.density == DensityScheme::Continuity
@@ -82,7 +90,12 @@ impl Effects {
         }
         if self.laminar_viscosity {
             v.push(match self.implicit_viscosity {
-                None => "laminar viscosity".into(),
+                None => match self.laminar_form {
+                    LaminarForm::HuAdams => "laminar viscosity".into(),
+                    LaminarForm::MonaghanClearyGingold => {
+                        "laminar viscosity (Monaghan–Cleary–Gingold form)".into()
+                    }
+                },
                 Some(iv) => format!(
                     "laminar viscosity (implicit: backward Euler, conjugate gradients to a relative residual of {:e})",
                     iv.relative_tolerance

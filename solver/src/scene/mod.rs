@@ -350,9 +350,15 @@ pub struct Effects {
     /// Gravitational acceleration vector [m/s²]. Omit for none.
     #[serde(default)]
     pub gravity: Option<[f64; 3]>,
-    /// Laminar viscosity (Hu & Adams 2006 form, Eq. 11 of Natsui 2021).
+    /// Laminar viscosity (Hu & Adams 2006 form, Eq. 11 of Natsui 2021, unless
+    /// `laminar_form` says otherwise).
     #[serde(default)]
     pub laminar_viscosity: bool,
+    /// The pair form of the laminar viscosity: `hu_adams` (the default, the paper's) or
+    /// `monaghan_cleary_gingold` (docs/model.md §3). Needs `laminar_viscosity`; the implicit
+    /// solve supports the default form only.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub laminar_form: LaminarForm,
     /// Monaghan artificial viscosity (Eq. 12–13 of Natsui 2021). Omit for none.
     #[serde(default)]
     pub artificial_viscosity: Option<ArtificialViscosity>,
@@ -603,6 +609,19 @@ pub struct Wall {
     /// Tangential boundary condition: `free_slip` (default) or `no_slip`.
     #[serde(default)]
     pub boundary: WallBoundary,
+}
+
+/// The pair form of the laminar viscosity.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum LaminarForm {
+    /// Eq. (11), Natsui 2021 (Hu & Adams 2006): the pair force along `v_i − v_j`.
+    #[default]
+    HuAdams,
+    /// Monaghan 2005 (after Monaghan & Gingold 1983 and Cleary 1998): the pair force along
+    /// `x_i − x_j`, proportional to `v_ij·x_ij` — zero under a rigid rotation, conserving
+    /// angular momentum, consistent at a free surface (Colagrossi et al. 2011).
+    MonaghanClearyGingold,
 }
 
 /// Tangential condition at a wall.

@@ -2,7 +2,9 @@
 //! Checks that need the particles (counts, overlaps) and the time-step limits are made when the
 //! simulation is built ([`crate::Simulation::new`]).
 
-use super::{shapes::on_lattice_plane, DensityScheme, Reinit, Scene, SceneError, WallBoundary};
+use super::{
+    shapes::on_lattice_plane, DensityScheme, LaminarForm, Reinit, Scene, SceneError, WallBoundary,
+};
 use std::collections::BTreeSet;
 
 type R = Result<(), SceneError>;
@@ -294,6 +296,22 @@ fn effects(s: &Scene) -> R {
                 "effects.particle_shifting.coefficient",
                 ps.coefficient,
                 "A in δr = −A h U dt ∇C: in (0, 8] (4 is Sun et al. 2017's; larger moves a particle more than its spacing per step)",
+            ));
+        }
+    }
+    if e.laminar_form != LaminarForm::default() {
+        if !e.laminar_viscosity {
+            return Err(SceneError::invalid(
+                "effects.laminar_form",
+                "monaghan_cleary_gingold",
+                "is the form of the laminar viscosity: it needs effects.laminar_viscosity = true",
+            ));
+        }
+        if e.implicit_viscosity.is_some() {
+            return Err(SceneError::invalid(
+                "effects.laminar_form",
+                "monaghan_cleary_gingold",
+                "the implicit viscous solve integrates the default form (hu_adams) only: drop effects.implicit_viscosity or the form",
             ));
         }
     }

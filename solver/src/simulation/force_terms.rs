@@ -6,16 +6,18 @@ use super::Simulation;
 use crate::kernel::Kernel;
 use crate::physics::forces::Monaghan1994WallRepulsion;
 use crate::physics::forces::{
-    fluid_forces, ArtificialViscosity, ContinuityRate, LaminarViscosity, LoopInput, Neighbourhood,
-    Off, Power, Pressure,
+    fluid_forces, ArtificialViscosity, ContinuityRate, LaminarViscosity, LoopInput,
+    MonaghanClearyGingold, Neighbourhood, Off, Power, Pressure,
 };
 use crate::physics::surface_tension::PairwisePotential;
+use crate::scene::LaminarForm;
 use crate::state::Vec3;
 
 /// Runs `$run` with `$terms` bound to the list `(A, (B, (…, Off)))` of the declared terms, one
 /// monomorphised loop per combination of declared terms. Each line is `if DECLARED => TERM,`
-/// (or `always => TERM,`), in loop order: the order in which the terms' parts of a pair sum
-/// are added.
+/// (or `always => TERM,`; or `if A => TERM_A, else if B => TERM_B,` for two forms of one
+/// term, never both), in loop order: the order in which the terms' parts of a pair sum are
+/// added.
 macro_rules! with_terms {
     ($terms:ident => $run:expr; $($list:tt)*) => {
         with_terms!(@pick [] $terms $run; $($list)*)
@@ -26,6 +28,16 @@ macro_rules! with_terms {
     }};
     (@pick [$($built:expr),*] $terms:ident $run:expr; always => $make:expr, $($rest:tt)*) => {
         with_terms!(@pick [$($built,)* $make] $terms $run; $($rest)*)
+    };
+    (@pick [$($built:expr),*] $terms:ident $run:expr;
+        if $on:expr => $make:expr, else if $on2:expr => $make2:expr, $($rest:tt)*) => {
+        if $on {
+            with_terms!(@pick [$($built,)* $make] $terms $run; $($rest)*)
+        } else if $on2 {
+            with_terms!(@pick [$($built,)* $make2] $terms $run; $($rest)*)
+        } else {
+            with_terms!(@pick [$($built,)* Off] $terms $run; $($rest)*)
+        }
     };
     (@pick [$($built:expr),*] $terms:ident $run:expr; if $on:expr => $make:expr, $($rest:tt)*) => {
         if $on {
@@ -52,7 +64,8 @@ impl Simulation {
             if e.interfacial_tension => self.potential_term(),
             always => self.pressure_term(),
             if e.artificial_viscosity.is_some() => self.artificial_viscosity_term(),
-            if e.explicit_laminar_viscosity() => self.laminar_viscosity_term(),
+            if e.explicit_laminar(LaminarForm::HuAdams) => self.laminar_viscosity_term(),
+            else if e.explicit_laminar(LaminarForm::MonaghanClearyGingold) => self.mcg_viscosity_term(),
             if e.continuity() => self.continuity_term(),
             if e.wall_repulsion => self.wall_repulsion_term(),
         )
@@ -94,6 +107,15 @@ impl Simulation {
             vol: &self.particles.vol,
             n_fluid: self.particles.n_fluid,
             wall_no_slip: &self.wall_no_slip,
+        }
+    }
+
+    /// The laminar viscosity term in the Monaghan–Cleary–Gingold form, with `η = 0.1 h`.
+    pub fn mcg_viscosity_term(&self) -> MonaghanClearyGingold<'_> {
+        let h = self.model.h_m;
+        MonaghanClearyGingold {
+            base: self.laminar_viscosity_term(),
+            eta2_m2: 0.01 * h * h, // (0.1 h)², as Monaghan 2005 and Eq. (13), Natsui 2021
         }
     }
 

@@ -80,6 +80,54 @@ fn booked(p: &Power, ledger: Ledger) -> (f64, f64) {
     )
 }
 
+/// Asserts that the power `power` booked to `ledger` is that of the forces `alone` gives,
+/// at the velocities of `s` and the accelerations `acc`.
+fn assert_booked(
+    s: &Simulation,
+    power: &Power,
+    acc: &[Vec3],
+    name: &str,
+    alone: &[Vec3],
+    ledger: Ledger,
+) {
+    let n = s.particles.n_fluid;
+    let (pv, pa, abs) = power_of(s, alone, acc);
+    let (bv, ba) = booked(power, ledger);
+    assert!(abs > 0.0, "{name}: no power at all");
+    // the same products summed in another order: round-off of ~1e-16 per term, over
+    // some 10⁴ terms; 1e-10 of Σ|f·v| leaves a wide margin and still catches a single
+    // pair booked twice or not at all (of order 1e-3 of it)
+    assert!(
+        (bv - pv).abs() <= 1e-10 * abs,
+        "{name}: booked {bv:e} W, own {pv:e} W"
+    );
+    let scale = abs * acc.iter().map(|a| a.norm()).fold(0.0, f64::max)
+        / s.particles.vel[..n]
+            .iter()
+            .map(|v| v.norm())
+            .fold(0.0, f64::max);
+    assert!(
+        (ba - pa).abs() <= 1e-10 * scale,
+        "{name}: booked {ba:e} W/s, own {pa:e} W/s"
+    );
+}
+
+#[test]
+fn the_central_laminar_form_is_booked_with_its_own_power() {
+    let text = drop_on_plate("lattice", SUMMATION_CLIP, "no_slip").replace(
+        "laminar_viscosity = true",
+        "laminar_viscosity = true\nlaminar_form = \"monaghan_cleary_gingold\"",
+    );
+    let mut s = sim(&text);
+    assert!(s.model.effects.names().iter().any(|e| e.contains("Gingold")));
+    advance(&mut s, 200); // on the plate: the no-slip wall's pairs take part
+    let mut acc = vec![Vec3::zeros(); s.particles.n_fluid];
+    let power = s.pair_forces::<WendlandC2>(&mut acc, &mut []);
+    let mcg = alone(&s, s.mcg_viscosity_term());
+    assert_booked(&s, &power, &acc, "central laminar", &mcg, Ledger::Laminar);
+    assert!(power.velocity_w[channel(Ledger::Laminar as usize, true)] != 0.0);
+}
+
 #[test]
 fn the_loop_books_each_terms_own_power_and_leaves_the_accelerations_alone() {
     let mut s = sim(&drop_on_plate("lattice", SUMMATION_CLIP, "no_slip"));
@@ -108,25 +156,7 @@ fn the_loop_books_each_terms_own_power_and_leaves_the_accelerations_alone() {
 
     // each booked term alone: its force is m (a − g), its power Σ f·v and Σ f·a
     let check = |name: &str, alone: &[Vec3], ledger: Ledger| {
-        let (pv, pa, abs) = power_of(&s, alone, &acc);
-        let (bv, ba) = booked(&power, ledger);
-        assert!(abs > 0.0, "{name}: no power at all");
-        // the same products summed in another order: round-off of ~1e-16 per term, over
-        // some 10⁴ terms; 1e-10 of Σ|f·v| leaves a wide margin and still catches a single
-        // pair booked twice or not at all (of order 1e-3 of it)
-        assert!(
-            (bv - pv).abs() <= 1e-10 * abs,
-            "{name}: booked {bv:e} W, own {pv:e} W"
-        );
-        let scale = abs * acc.iter().map(|a| a.norm()).fold(0.0, f64::max)
-            / s.particles.vel[..n]
-                .iter()
-                .map(|v| v.norm())
-                .fold(0.0, f64::max);
-        assert!(
-            (ba - pa).abs() <= 1e-10 * scale,
-            "{name}: booked {ba:e} W/s, own {pa:e} W/s"
-        );
+        assert_booked(&s, &power, &acc, name, alone, ledger)
     };
     check(
         "laminar",

@@ -13,6 +13,7 @@ mod failures;
 mod far_pairs;
 mod fuzz_scenes;
 mod implicit_viscosity;
+mod laminar_forms;
 mod lattice_energy;
 mod periodic;
 mod scene_errors;

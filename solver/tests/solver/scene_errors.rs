@@ -319,6 +319,31 @@ fn implicit_viscosity_without_its_term_with_no_slip_walls_or_a_bad_rule() {
 }
 
 #[test]
+fn a_laminar_form_without_its_term_with_the_implicit_solve_or_misspelt() {
+    let mcg = "laminar_form = \"monaghan_cleary_gingold\"";
+    assert_names(
+        &block_scene(6, 1e-4, mcg, ""),
+        &["effects.laminar_form", "laminar_viscosity = true"],
+    );
+    assert_names(
+        &block_scene(
+            6,
+            1e-4,
+            &format!("laminar_viscosity = true\nimplicit_viscosity = {{}}\n{mcg}"),
+            "",
+        ),
+        &["effects.laminar_form", "implicit", "hu_adams"],
+    );
+    assert_names(
+        &block_scene(6, 1e-4, "laminar_viscosity = true\nlaminar_form = \"mcg\"", ""),
+        &["mcg", "monaghan_cleary_gingold"],
+    );
+    // the default form may be written out
+    let ok = block_scene(6, 1e-4, "laminar_viscosity = true\nlaminar_form = \"hu_adams\"", "");
+    assert!(Simulation::new(&Scene::from_toml_str(&ok).unwrap()).is_ok());
+}
+
+#[test]
 fn a_name_that_would_break_a_csv_column() {
     // liquid names head the time series' columns: `slag, FeO` would split one in two
     let text = base().replace("name = \"matte\"", "name = \"slag, FeO\"");

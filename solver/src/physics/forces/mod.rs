@@ -32,7 +32,7 @@ pub mod wall_repulsion;
 pub use artificial_viscosity::ArtificialViscosity;
 pub use continuity::ContinuityRate;
 pub use fused::{fluid_forces, LoopInput};
-pub use laminar_viscosity::LaminarViscosity;
+pub use laminar_viscosity::{LaminarViscosity, MonaghanClearyGingold};
 pub use ledger::{Dissipation, Ledger, Power};
 pub use pressure::Pressure;
 pub use term::{Neighbourhood, Off, PairTerm};

@@ -129,7 +129,9 @@ pub fn laminar_shear_ratio<K: Kernel>(
                     // Eq. (11), Natsui 2021: a_x = 2ν Σ V_j (dW/dr / r) (v_i − v_j)
                     LaminarForm::HuAdams => 2.0 * shear * f,
                     // Monaghan 2005: a_x = 2(d+2) ν Σ V_j (v_ij·x_ij) x_ij,x (dW/dr / r)/(r² + η²)
-                    LaminarForm::MonaghanClearyGingold => MCG_FACTOR * shear * x * x * f / (r2 + eta2),
+                    LaminarForm::MonaghanClearyGingold => {
+                        MCG_FACTOR * shear * x * x * f / (r2 + eta2)
+                    }
                 };
             }
         }

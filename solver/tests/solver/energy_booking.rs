@@ -119,7 +119,12 @@ fn the_central_laminar_form_is_booked_with_its_own_power() {
         "laminar_viscosity = true\nlaminar_form = \"monaghan_cleary_gingold\"",
     );
     let mut s = sim(&text);
-    assert!(s.model.effects.names().iter().any(|e| e.contains("Gingold")));
+    assert!(s
+        .model
+        .effects
+        .names()
+        .iter()
+        .any(|e| e.contains("Gingold")));
     advance(&mut s, 200); // on the plate: the no-slip wall's pairs take part
     let mut acc = vec![Vec3::zeros(); s.particles.n_fluid];
     let power = s.pair_forces::<WendlandC2>(&mut acc, &mut []);

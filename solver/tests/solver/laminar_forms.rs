@@ -124,9 +124,7 @@ fn spin(form: LaminarForm, steps: usize) -> (f64, f64) {
         let p = &s.particles;
         impulse += dt
             * (0..p.n_fluid)
-                .map(|i| {
-                    p.pos[i].cross(&p.acc[i]).norm() * s.model.mass[p.phase[i] as usize]
-                })
+                .map(|i| p.pos[i].cross(&p.acc[i]).norm() * s.model.mass[p.phase[i] as usize])
                 .sum::<f64>();
     }
     assert!(l0.norm() > 0.0);
@@ -162,7 +160,11 @@ fn a_rigid_rotation_feels_no_central_viscosity() {
         let (mut spun, mut rest) = (vec![Vec3::zeros(); n], vec![Vec3::zeros(); n]);
         s.pair_forces::<WendlandC2>(&mut spun, &mut []);
         let mut still = s.clone();
-        still.particles.vel.iter_mut().for_each(|v| *v = Vec3::zeros());
+        still
+            .particles
+            .vel
+            .iter_mut()
+            .for_each(|v| *v = Vec3::zeros());
         still.pair_forces::<WendlandC2>(&mut rest, &mut []);
         (0..n)
             .map(|i| (spun[i] - rest[i]).norm())

@@ -335,11 +335,21 @@ fn a_laminar_form_without_its_term_with_the_implicit_solve_or_misspelt() {
         &["effects.laminar_form", "implicit", "hu_adams"],
     );
     assert_names(
-        &block_scene(6, 1e-4, "laminar_viscosity = true\nlaminar_form = \"mcg\"", ""),
+        &block_scene(
+            6,
+            1e-4,
+            "laminar_viscosity = true\nlaminar_form = \"mcg\"",
+            "",
+        ),
         &["mcg", "monaghan_cleary_gingold"],
     );
     // the default form may be written out
-    let ok = block_scene(6, 1e-4, "laminar_viscosity = true\nlaminar_form = \"hu_adams\"", "");
+    let ok = block_scene(
+        6,
+        1e-4,
+        "laminar_viscosity = true\nlaminar_form = \"hu_adams\"",
+        "",
+    );
     assert!(Simulation::new(&Scene::from_toml_str(&ok).unwrap()).is_ok());
 }
 

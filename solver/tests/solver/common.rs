@@ -17,6 +17,18 @@ shape = { kind = "disk", center = [0.0, 0.0, -6.0e-4], radius = 1.2e-3 }
 /// the given extra TOML appended (effects etc.).
 pub fn block_scene(n: usize, l0: f64, effects: &str, extra: &str) -> String {
     let half = n as f64 * l0 / 2.0;
+    let shape = format!(
+        "{{ kind = \"box\", min = [{m:e}, {m:e}, {m:e}], max = [{p:e}, {p:e}, {p:e}] }}",
+        m = -half,
+        p = half
+    );
+    matte_scene(l0, effects, "block", &shape, extra)
+}
+
+/// One matte body (density 4500 kg/m³, viscosity 3.13e-3 Pa·s, σ 0.4 N/m) named `name` of
+/// the given TOML `shape`, at spacing `l0` [m] and c = 12 m/s, with `effects` and `extra`
+/// appended.
+pub fn matte_scene(l0: f64, effects: &str, name: &str, shape: &str, extra: &str) -> String {
     format!(
         r#"
 [discretisation]
@@ -33,13 +45,11 @@ density = 4500.0
 viscosity = 3.13e-3
 surface_tension = 0.4
 [[body]]
-name = "block"
+name = "{name}"
 liquid = "matte"
-shape = {{ kind = "box", min = [{m:e}, {m:e}, {m:e}], max = [{p:e}, {p:e}, {p:e}] }}
+shape = {shape}
 {extra}
-"#,
-        m = -half,
-        p = half
+"#
     )
 }
 

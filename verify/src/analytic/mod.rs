@@ -1,5 +1,6 @@
 //! Analytic references, computed by the code (never typed in from the papers).
 
+pub mod elastic_drop;
 pub mod eq23;
 pub mod lamb;
 pub mod neumann;

@@ -106,12 +106,13 @@ fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
     )
 }
 
-/// The drop's table: R/l0, particles, period, error, decay rate and its ratio to Lamb's with
-/// the physical ν alone (all from Q2), the same from the z-extent, wall time.
+/// The drop's table: R/l0, particles, period, error, the elastic drop's error bracket, decay
+/// rate and its ratio to Lamb's with the physical ν alone (all from Q2), the same from the
+/// z-extent, wall time.
 fn drop_table(drops: &[DropPoint]) -> String {
     let mut s = String::from(
-        "| R/l0 | l0 [µm] | particles | period [ms] | Rayleigh [ms] | error | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| R/l0 | l0 [µm] | particles | period [ms] | Rayleigh [ms] | error | elastic drop: error with C′ … C44 | decay rate [1/s] | / Lamb(ν) | / Lamb(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for d in drops {
         let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
@@ -123,13 +124,15 @@ fn drop_table(drops: &[DropPoint]) -> String {
             .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
         let _ = writeln!(
             s,
-            "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:+.1} … {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
             d.r_over_l0,
             d.run.info.scene.discretisation.l0 * 1e6,
             d.run.info.fluid_particles,
             p * 1e3,
             d.rayleigh_period_s * 1e3,
             100.0 * (p / d.rayleigh_period_s - 1.0),
+            100.0 * (d.elastic_periods_s[0] / d.rayleigh_period_s - 1.0),
+            100.0 * (d.elastic_periods_s[1] / d.rayleigh_period_s - 1.0),
             g,
             g / d.lamb_physical_per_s,
             g / d.lamb_with_av_per_s,

@@ -3,9 +3,10 @@
 //! that changes a property is judged against the right analytic value.
 
 use super::{FIT_FROM_S, Q2, RADIUS_M};
-use crate::analytic::{lamb, young_laplace};
+use crate::analytic::{elastic_drop, lamb, young_laplace};
 use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
+use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::measure::geometry;
 use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
 use crate::measure::surface;
@@ -20,6 +21,10 @@ pub struct DropPoint<'r> {
     pub r_over_l0: f64,
     /// Rayleigh's l = 2 period for the drop's volume (particles × l0³) [s].
     pub rayleigh_period_s: f64,
+    /// Rayleigh's period shortened by the reference lattice's shear moduli at the run's setting
+    /// (Rayleigh–Ritz, [`elastic_drop`]): with `C′`, which a stretch along the lattice's axis
+    /// loads (this drop's), and with `C44` (a body diagonal) [s]; NaN without the potential.
+    pub elastic_periods_s: [f64; 2],
     /// Lamb's l = 2 decay rate with the physical ν alone [1/s].
     pub lamb_physical_per_s: f64,
     /// Lamb's l = 2 decay rate with ν + ν_AV (α1 h c/10) [1/s].
@@ -108,10 +113,12 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         .liquid_column(&liquid.name, LiquidColumn::Extent(Axis::Z));
     let efrom = ts.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(ts.len());
     let en = ts.len().min(extent.len()).max(efrom);
+    let rayleigh_period_s = lamb::lamb_period(2, sigma, liquid.density, radius);
     DropPoint {
         run,
         r_over_l0: RADIUS_M / scene.discretisation.l0,
-        rayleigh_period_s: lamb::lamb_period(2, sigma, liquid.density, radius),
+        rayleigh_period_s,
+        elastic_periods_s: elastic_periods_s(scene, rayleigh_period_s, sigma, radius),
         lamb_physical_per_s: lamb::lamb_damping_rate(2, nu, radius),
         // the artificial viscosity's effective ν ≈ α1 h c/10 (Monaghan 1992)
         lamb_with_av_per_s: lamb::lamb_damping_rate(
@@ -123,6 +130,25 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
     }
+}
+
+/// [`DropPoint::elastic_periods_s`]: the lattice's moduli (potential and pressure term, lattice
+/// calibration; `σ/l0` units) in Pa.
+fn elastic_periods_s(
+    scene: &solver::Scene,
+    rayleigh_period_s: f64,
+    sigma_n_m: f64,
+    radius_m: f64,
+) -> [f64; 2] {
+    if !scene.effects.interfacial_tension {
+        return [f64::NAN; 2];
+    }
+    let d = &scene.discretisation;
+    let moduli = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order).total();
+    let pa = sigma_n_m / d.l0;
+    [moduli.c_prime, moduli.g44].map(|g| {
+        elastic_drop::elastic_drop_period_s(rayleigh_period_s, g * pa, sigma_n_m, radius_m)
+    })
 }
 
 fn cap_point(run: &RunData) -> CapPoint<'_> {

@@ -21,6 +21,8 @@ pub(crate) fn interrupt_flag() -> Arc<AtomicBool> {
     .clone()
 }
 
+/// The process's exit code for a command's result: its own code, 2 for an input error, 130 when
+/// interrupted, 3 for any other error (docs/user-guide.md lists them).
 pub(crate) fn exit_of(r: anyhow::Result<i32>) -> i32 {
     match r {
         Ok(code) => code,

@@ -103,7 +103,7 @@ mod tests {
 
     #[test]
     fn an_isotropic_solid_stores_three_halves_g_per_volume() {
-        // isotropic: C′ = C44 = G, any axis
+        // isotropic: C′ = C44 = G, any axis (bounds: a few roundings of O(1) numbers)
         for axis in [[0.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.3, -0.7, 0.2]] {
             let g = cubic_stretch_modulus(2.0, 2.0, axis);
             assert!((g - 2.0).abs() < 1e-12, "{axis:?}: {g}");
@@ -116,6 +116,7 @@ mod tests {
 
     #[test]
     fn a_cubic_crystal_shows_c_prime_along_an_axis_and_c44_along_a_body_diagonal() {
+        // arbitrary moduli; the sums are exact up to a few roundings (bounds 1e-15 on O(0.1))
         let (cp, c44) = (0.047, 0.126);
         assert!((cubic_stretch_modulus(cp, c44, [0.0, 0.0, 1.0]) - cp).abs() < 1e-15);
         assert!((cubic_stretch_modulus(cp, c44, [1.0, 1.0, 1.0]) - c44).abs() < 1e-15);

@@ -146,7 +146,9 @@ fn elastic_periods_s(
     let d = &scene.discretisation;
     let moduli = lattice_elasticity(d.kernel, d.h_over_l0, d.re_over_l0, d.potential_order).total();
     let pa = sigma_n_m / d.l0;
-    [moduli.c_prime, moduli.g44].map(|g| {
+    // the drop is stretched along z, a cube axis of its lattice; a body diagonal is the other bound
+    [[0.0, 0.0, 1.0], [1.0, 1.0, 1.0]].map(|axis| {
+        let g = elastic_drop::cubic_stretch_modulus(moduli.c_prime, moduli.g44, axis);
         elastic_drop::elastic_drop_period_s(rayleigh_period_s, g * pa, sigma_n_m, radius_m)
     })
 }

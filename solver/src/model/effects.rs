@@ -21,6 +21,8 @@ pub struct Effects {
     pub artificial_viscosity: Option<(f64, f64)>,
     /// Pairwise-potential surface and interfacial tension.
     pub interfacial_tension: bool,
+    /// Continuum-surface-stress tension between liquid phases.
+    pub surface_stress: bool,
     /// Wall particles (pressure extrapolation; with tension also wetting).
     pub walls: bool,
     /// Some wall is no-slip.
@@ -50,7 +52,8 @@ impl Effects {
                 .artificial_viscosity
                 .as_ref()
                 .map(|a| (a.alpha1, a.alpha2)),
-            interfacial_tension: e.interfacial_tension,
+            interfacial_tension: e.interfacial_tension.is_potential(),
+            surface_stress: e.interfacial_tension.is_surface_stress(),
             walls: !scene.walls.is_empty(),
             wall_repulsion: e.wall_repulsion,
             particle_shifting: e.particle_shifting.as_ref().map(|p| p.coefficient),
@@ -107,6 +110,9 @@ impl Effects {
         }
         if self.interfacial_tension {
             v.push("interfacial tension (pairwise potential, Fowkes pairs)".into());
+        }
+        if self.surface_stress {
+            v.push("interfacial tension (continuum surface stress between liquids)".into());
         }
         if self.walls {
             let slip = if self.no_slip_walls {

@@ -53,6 +53,9 @@ pub struct Model {
     pub mu_pair: Vec<f64>,
     /// Fowkes pair table (zero coefficients without interfacial tension).
     pub pairs: PairTable,
+    /// The tension [N/m] of each pair of phases for the continuum surface stress, row-major
+    /// (empty without it; [`pairs::surface_stress_table`]).
+    pub surface_stress_sigma: Vec<f64>,
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
     pub tension_scales: Vec<f64>,
@@ -87,8 +90,9 @@ pub struct Model {
     pub wall_repulsion_range_m: f64,
     /// The walls as solids liquid must stay out of (the health check's wall entry).
     pub walls: Vec<WallSolid>,
-    /// The far radius of the neighbour search [m]: `r_e` with interfacial tension, else the
-    /// kernel support (the search uses the larger of it and the support).
+    /// The far radius of the neighbour search [m]: `r_e` with interfacial tension (the
+    /// potential's cut-off, or the surface stress's colour kernel support), else the kernel
+    /// support (the search uses the larger of it and the support).
     pub interaction_radius_m: f64,
     /// Periodic axes: pair vectors are minimum images ([`PeriodicBox`]).
     pub periodic: PeriodicBox,
@@ -149,7 +153,7 @@ impl Model {
             .collect();
         mass.extend(scene.solids.iter().map(|_| 0.0));
         let mu_pair = pairs::viscosity_table(&mu, n_liquids);
-        let pairs = if scene.effects.interfacial_tension {
+        let pairs = if scene.effects.interfacial_tension.is_potential() {
             pairs::fowkes_table(scene, surface_sum_m3)
         } else {
             PairTable::zero(phase_names.len())
@@ -169,7 +173,12 @@ impl Model {
             })
             .collect();
         let support_m = scene.kernel_support();
-        let interaction_radius_m = if effects.interfacial_tension {
+        let surface_stress_sigma = if effects.surface_stress {
+            pairs::surface_stress_table(scene)
+        } else {
+            Vec::new()
+        };
+        let interaction_radius_m = if effects.interfacial_tension || effects.surface_stress {
             r_e
         } else {
             support_m
@@ -198,6 +207,7 @@ impl Model {
             mass,
             mu_pair,
             pairs,
+            surface_stress_sigma,
             tension_scales: vec![1.0; n_liquids],
             pair_tension_scales: Vec::new(),
             lattice_kernel_sum,
@@ -264,6 +274,34 @@ impl Model {
         K::new(self.h_m)
     }
 
+    /// The tension [N/m] of liquid phases `a ≠ b` under the continuum surface stress (zero
+    /// without it).
+    pub fn surface_stress_sigma(&self, a: usize, b: usize) -> f64 {
+        let n = self.phase_names.len();
+        self.surface_stress_sigma
+            .get(a * n + b)
+            .copied()
+            .unwrap_or(0.0)
+    }
+
+    /// The capillary step limit of the surface stress [s]: per pair of liquids with a tension,
+    /// `capillary · √(ρ̄ h³/(2π σ_ab))` with the pair's mean density `ρ̄` (Brackbill et al.
+    /// 1992's constraint with the two fluids' mean, docs/model.md §3); the smallest.
+    fn surface_stress_step_limit(&self) -> Option<f64> {
+        let f = self.time.factors.capillary;
+        let h = self.h_m;
+        let n = self.n_liquids;
+        (0..n)
+            .flat_map(|a| (0..n).map(move |b| (a, b)))
+            .filter(|&(a, b)| self.surface_stress_sigma(a, b) > 0.0)
+            .map(|(a, b)| {
+                let rho = 0.5 * (self.rho0[a] + self.rho0[b]);
+                let sigma = self.surface_stress_sigma(a, b);
+                f * (rho * h * h * h / (2.0 * std::f64::consts::PI * sigma)).sqrt()
+            })
+            .reduce(f64::min)
+    }
+
     /// The time-step limits that do not depend on the state: viscous and capillary [s].
     pub fn static_step_limits(&self) -> (Option<f64>, Option<f64>) {
         let f = &self.time.factors;
@@ -288,6 +326,8 @@ impl Model {
                         * (self.rho0[a] * h * h * h / (2.0 * std::f64::consts::PI * sigma)).sqrt()
                 })
                 .reduce(f64::min)
+        } else if self.effects.surface_stress {
+            self.surface_stress_step_limit()
         } else {
             None
         };

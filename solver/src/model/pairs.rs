@@ -36,6 +36,24 @@ pub fn fowkes_table(scene: &Scene, s_m3: f64) -> PairTable {
     PairTable::new(n, sigma_pair, scene.discretisation.l0, s_m3)
 }
 
+/// The tension of each pair of phases for the continuum surface stress [N/m], row-major: the
+/// scene's `[[interface]]` tension between two different liquids, zero otherwise (a liquid with
+/// itself, liquids that never meet, solids).
+pub fn surface_stress_table(scene: &Scene) -> Vec<f64> {
+    let nl = scene.liquids.len();
+    let n = nl + scene.solids.len();
+    let mut sigma = vec![0.0; n * n];
+    for a in 0..nl {
+        for b in 0..nl {
+            if a != b {
+                let (na, nb) = (&scene.liquids[a].name, &scene.liquids[b].name);
+                sigma[a * n + b] = scene.interface_tension(na, nb).unwrap_or(0.0);
+            }
+        }
+    }
+    sigma
+}
+
 /// Viscosity of each pair of phases [Pa·s], row-major, from the per-phase viscosities `mu`
 /// (liquids first, `n_liquids` of them): `2μ_aμ_b/(μ_a + μ_b)` for two liquids (Eq. 11,
 /// Natsui 2021; 0 if both are inviscid), the liquid's `μ` against a solid, 0 between solids.

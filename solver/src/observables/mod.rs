@@ -102,11 +102,15 @@ pub struct Observables {
     pub max_compression: f64,
 }
 
-/// Computes the observables of `p` at time `time_s` [s], with the energy dissipated so far.
+/// Computes the observables of `p` at time `time_s` [s], with the energy dissipated so far;
+/// `surface_stress_energy_j` [J] is the continuum surface stress's interfacial energy of the
+/// state (zero without it: it is computed with the stress itself).
+#[allow(clippy::too_many_arguments)]
 pub fn observe(
     model: &Model,
     p: &Particles,
     lists: &NeighbourLists,
+    surface_stress_energy_j: f64,
     dissipation: &Dissipation,
     time_s: f64,
     dt_s: f64,
@@ -160,7 +164,7 @@ pub fn observe(
         }
     }
     let kinetic_energy_j: f64 = phases.iter().map(|s| s.kinetic_energy_j).sum();
-    let interfacial_energy_j = interfacial_energy(model, p, lists);
+    let interfacial_energy_j = interfacial_energy(model, p, lists) + surface_stress_energy_j;
     let compression_energy_j = compression_energy(model, p);
     let gravity_energy_j = gravity_energy(model, p);
     let wall_repulsion_energy_j = wall_repulsion_energy(model, p, lists);

@@ -362,10 +362,12 @@ pub struct Effects {
     /// Monaghan artificial viscosity (Eq. 12–13 of Natsui 2021). Omit for none.
     #[serde(default)]
     pub artificial_viscosity: Option<ArtificialViscosity>,
-    /// Surface and interfacial tension by the pairwise potential (Eq. 15, Natsui 2021) with
-    /// Fowkes pair strengths; also wetting of walls.
+    /// Surface and interfacial tension: `true` or `"potential"` — the pairwise potential
+    /// (Eq. 15, Natsui 2021) with Fowkes pair strengths, also wetting of walls;
+    /// `"surface_stress"` — the continuum surface stress between liquid phases (Lafaurie et al.
+    /// 1994, Hu & Adams 2006; docs/model.md §4a), no walls yet; `false` (the default): none.
     #[serde(default)]
-    pub interfacial_tension: bool,
+    pub interfacial_tension: TensionModel,
     /// A short-range liquid–wall repulsion that does not depend on the kernel (Monaghan 1994's
     /// boundary force, acting within 0.8 l0 of a wall particle), for wide kernels whose
     /// pressure does not hold a wetting liquid out of the gaps between wall particles. Needs
@@ -383,6 +385,79 @@ pub struct Effects {
     /// (the default).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub implicit_viscosity: Option<ImplicitViscosity>,
+}
+
+/// Which model of surface and interfacial tension a scene builds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum TensionModel {
+    /// No tension (`false`, the default).
+    #[default]
+    Off,
+    /// The pairwise potential with Fowkes pair strengths (`true` or `"potential"`).
+    Potential,
+    /// The continuum surface stress between liquid phases (`"surface_stress"`).
+    SurfaceStress,
+}
+
+impl TensionModel {
+    /// Whether the pairwise potential is built.
+    pub fn is_potential(self) -> bool {
+        self == TensionModel::Potential
+    }
+    /// Whether the continuum surface stress is built.
+    pub fn is_surface_stress(self) -> bool {
+        self == TensionModel::SurfaceStress
+    }
+    /// Whether some tension model is built.
+    pub fn is_on(self) -> bool {
+        self != TensionModel::Off
+    }
+}
+
+impl From<bool> for TensionModel {
+    /// `true` is the potential (the key was a switch before there were two models).
+    fn from(on: bool) -> Self {
+        if on {
+            TensionModel::Potential
+        } else {
+            TensionModel::Off
+        }
+    }
+}
+
+impl Serialize for TensionModel {
+    /// `false`, `true` (the potential: scenes and run records written before the second model
+    /// read and compare unchanged) or `"surface_stress"`.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            TensionModel::Off => s.serialize_bool(false),
+            TensionModel::Potential => s.serialize_bool(true),
+            TensionModel::SurfaceStress => s.serialize_str("surface_stress"),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for TensionModel {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = TensionModel;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("true, false, \"potential\" or \"surface_stress\"")
+            }
+            fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<TensionModel, E> {
+                Ok(v.into())
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<TensionModel, E> {
+                match v {
+                    "potential" => Ok(TensionModel::Potential),
+                    "surface_stress" => Ok(TensionModel::SurfaceStress),
+                    _ => Err(E::invalid_value(serde::de::Unexpected::Str(v), &self)),
+                }
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 /// The implicit viscous solve's stopping rule.

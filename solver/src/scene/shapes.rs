@@ -37,6 +37,18 @@ pub enum BodyShape {
         /// Outer radius [m].
         outer_radius: f64,
     },
+    /// Axis-aligned box `min ≤ x < max` without an axis-aligned ellipsoid: a second liquid
+    /// around a drop (an ellipsoid body of the same `center` and `semi_axes`), filling a box.
+    BoxAroundEllipsoid {
+        /// Lower corner [m].
+        min: [f64; 3],
+        /// Upper corner [m].
+        max: [f64; 3],
+        /// The ellipsoid's centre [m].
+        center: [f64; 3],
+        /// Its semi-axes along x, y, z [m].
+        semi_axes: [f64; 3],
+    },
     /// Half ball: the flat face passes through `center`, the dome points along `pole`.
     Hemisphere {
         /// Centre of the flat face [m].
@@ -157,7 +169,9 @@ impl BodyShape {
                 [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
                 [c[0] + a[0], c[1] + a[1], c[2] + a[2]],
             ),
-            BodyShape::Box { min, max } => (min, max),
+            BodyShape::Box { min, max } | BodyShape::BoxAroundEllipsoid { min, max, .. } => {
+                (min, max)
+            }
         }
     }
 
@@ -173,6 +187,15 @@ impl BodyShape {
                 (0..3).map(|k| (d[k] / semi_axes[k]).powi(2)).sum::<f64>() < 1.0
             }
             BodyShape::Box { min, max } => (0..3).all(|k| p[k] >= min[k] && p[k] < max[k]),
+            BodyShape::BoxAroundEllipsoid {
+                min,
+                max,
+                center,
+                semi_axes,
+            } => {
+                BodyShape::Box { min, max }.contains(p)
+                    && !BodyShape::Ellipsoid { center, semi_axes }.contains(p)
+            }
             BodyShape::Shell {
                 center,
                 inner_radius,
@@ -220,6 +243,16 @@ impl BodyShape {
                     finite3(max) && (0..3).all(|k| max[k] > min[k]),
                 ),
             ],
+            BodyShape::BoxAroundEllipsoid {
+                min,
+                max,
+                center,
+                semi_axes,
+            } => {
+                let mut v = BodyShape::Box { min, max }.checks();
+                v.extend(BodyShape::Ellipsoid { center, semi_axes }.checks());
+                v
+            }
             BodyShape::Shell {
                 center,
                 inner_radius,

@@ -282,11 +282,11 @@ fn effects(s: &Scene) -> R {
             "a liquid–wall repulsion needs walls: add a [[wall]] or remove the effect",
         ));
     }
-    if e.wall_repulsion && !e.interfacial_tension {
+    if e.wall_repulsion && !e.interfacial_tension.is_potential() {
         return Err(SceneError::invalid(
             "effects.wall_repulsion",
             true,
-            "its strength scales with the cohesive pressure of the potential: it needs effects.interfacial_tension",
+            "its strength scales with the cohesive pressure of the potential: it needs effects.interfacial_tension = true (the potential)",
         ));
     }
     if let Some(ps) = &e.particle_shifting {
@@ -606,10 +606,12 @@ fn walls(s: &Scene) -> R {
     Ok(())
 }
 
-/// With interfacial tension on, every liquid needs σ, every pair of liquids present needs σ_ab,
-/// every liquid needs a contact angle on every solid that a wall is made of.
+/// With interfacial tension on, every pair of liquids present needs σ_ab; with the potential
+/// every liquid also needs σ, and a contact angle on every solid that a wall is made of. The
+/// surface stress acts between liquids only: it needs two of them and no walls (yet).
 fn tension_inputs(s: &Scene) -> R {
-    if !s.effects.interfacial_tension {
+    let model = s.effects.interfacial_tension;
+    if !model.is_on() {
         return Ok(());
     }
     let mut used: BTreeSet<&str> = BTreeSet::new();
@@ -622,7 +624,10 @@ fn tension_inputs(s: &Scene) -> R {
             used.insert(&c.liquids[1]);
         }
     }
-    for l in &s.liquids {
+    if model.is_surface_stress() {
+        surface_stress_inputs(s, used.len())?;
+    }
+    for l in s.liquids.iter().filter(|_| model.is_potential()) {
         if l.surface_tension.is_none() {
             return Err(SceneError::invalid(
                 format!("liquid[{}].surface_tension", l.name),
@@ -657,6 +662,31 @@ fn tension_inputs(s: &Scene) -> R {
                 ));
             }
         }
+    }
+    Ok(())
+}
+
+/// The surface stress's own limits: it acts across interfaces between liquid phases, so a
+/// scene needs at least two liquids in its bodies (a liquid's free surface against empty space
+/// carries no tension: the surrounding gas is declared as a liquid); contact angles on walls
+/// are not built for it yet.
+fn surface_stress_inputs(s: &Scene, liquids_used: usize) -> R {
+    if liquids_used < 2 {
+        return Err(SceneError::invalid(
+            "effects.interfacial_tension",
+            "\"surface_stress\"",
+            "the surface stress acts across interfaces between liquid phases and a free surface \
+             against empty space carries none: declare the surrounding fluid as a second liquid \
+             and give the pair's [[interface]] tension",
+        ));
+    }
+    if let Some(w) = s.walls.first() {
+        return Err(SceneError::invalid(
+            format!("wall[{}]", w.name),
+            "present",
+            "contact angles are not built for effects.interfacial_tension = \"surface_stress\" \
+             yet: use the potential (true) for scenes with walls",
+        ));
     }
     Ok(())
 }

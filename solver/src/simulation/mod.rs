@@ -92,6 +92,8 @@ pub struct Simulation {
     shift: Vec<crate::state::Vec3>,
     /// Scratch of the far pass, kept between steps.
     far_spills: crate::physics::forces::pairs_once::Spills,
+    /// The continuum surface stress of the current state (empty without it).
+    pub surface_stress: crate::physics::surface_tension::surface_stress::StressScratch,
     /// Scratch of the fluid's re-sort, kept between rebuilds.
     rebuild: neighbours::RebuildScratch,
     /// The implicit viscous solves of this process (zero without implicit viscosity).
@@ -163,6 +165,7 @@ impl Simulation {
             first_dt_s: 0.0,
             drho_next,
             far_spills: Default::default(),
+            surface_stress: Default::default(),
             rebuild: Default::default(),
             viscous_solves: Default::default(),
             viscous: Default::default(),
@@ -310,6 +313,7 @@ impl Simulation {
             &self.model,
             &self.particles,
             &self.search.lists,
+            self.surface_stress.interface_energy_j,
             &self.dissipation,
             self.time_s,
             self.last_dt_s,

@@ -18,5 +18,6 @@ mod lattice_energy;
 mod periodic;
 mod scene_errors;
 mod shifting;
+mod surface_stress;
 mod tension_calibration;
 mod walls;

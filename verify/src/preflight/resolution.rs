@@ -30,6 +30,20 @@ fn half_thickness_m(shape: &BodyShape, periodic: [bool; 3]) -> Option<f64> {
             .filter(|&k| !periodic[k])
             .map(|k| 0.5 * (max[k] - min[k]))
             .reduce(f64::min),
+        // its thinnest wall: between the ellipsoid and the box's faces
+        BodyShape::BoxAroundEllipsoid {
+            min,
+            max,
+            center,
+            semi_axes,
+        } => (0..3)
+            .filter(|&k| !periodic[k])
+            .map(|k| {
+                let below = center[k] - semi_axes[k] - min[k];
+                let above = max[k] - center[k] - semi_axes[k];
+                0.5 * below.min(above)
+            })
+            .reduce(f64::min),
     }
 }
 

@@ -22,7 +22,7 @@ pub fn findings(scene: &Scene) -> Vec<Finding> {
     let mut out = Vec::new();
     let d = &scene.discretisation;
     let (l0, c) = (d.l0, d.sound_speed);
-    if scene.effects.interfacial_tension {
+    if scene.effects.interfacial_tension.is_potential() {
         // the cohesive pressure the EOS carries on the reference lattice [σ/l0]
         let p_b = lattice_moduli::lattice_elasticity(
             d.kernel,
@@ -91,7 +91,7 @@ pub fn fastest_speed(scene: &Scene) -> (f64, String) {
             format!("free fall over the scene's {:.2} mm height", h * 1e3),
         );
     }
-    if scene.effects.interfacial_tension {
+    if scene.effects.interfacial_tension.is_potential() {
         let l0 = scene.discretisation.l0;
         for l in &scene.liquids {
             if let Some(s) = l.surface_tension {

@@ -85,7 +85,7 @@ impl DeclaredEffects {
         self.gravity == e.gravity.is_some()
             && self.laminar_viscosity == e.laminar_viscosity
             && self.artificial_viscosity == e.artificial_viscosity.is_some()
-            && self.interfacial_tension == e.interfacial_tension
+            && self.interfacial_tension == e.interfacial_tension.is_on()
             && self.walls != scene.walls.is_empty()
     }
 

@@ -140,7 +140,7 @@ fn elastic_periods_s(
     sigma_n_m: f64,
     radius_m: f64,
 ) -> [f64; 2] {
-    if !scene.effects.interfacial_tension {
+    if !scene.effects.interfacial_tension.is_potential() {
         return [f64::NAN; 2];
     }
     let d = &scene.discretisation;

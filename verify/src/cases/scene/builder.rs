@@ -134,7 +134,7 @@ impl SceneBuilder {
     /// viscosity with α1 = α2 = 0.01 (no gravity: see [`SceneBuilder::gravity`]).
     pub fn paper_effects(mut self) -> Self {
         let e = &mut self.scene.effects;
-        e.interfacial_tension = true;
+        e.interfacial_tension = true.into();
         e.laminar_viscosity = true;
         e.artificial_viscosity = Some(ArtificialViscosity {
             alpha1: 0.01,
@@ -152,7 +152,7 @@ impl SceneBuilder {
 
     /// The pairwise potential (surface and interfacial tension) on or off.
     pub fn interfacial_tension(mut self, on: bool) -> Self {
-        self.scene.effects.interfacial_tension = on;
+        self.scene.effects.interfacial_tension = on.into();
         self
     }
 

@@ -100,7 +100,7 @@ fn shear_modulus(case: &str, m: &WaveRun, w_el: f64) -> Metric {
             e.pressure.g44,
             e.total().g44
         )
-    } else if scene.effects.interfacial_tension {
+    } else if scene.effects.interfacial_tension.is_potential() {
         format!(
             "Born G44 of the reference lattice at the box's state (lattice density, zero pressure: the potential's term, r_e = {} l0): {:.3} σ/l0; in a drop's interior, where the EOS carries p_b = {:.3} σ/l0 ({} at h = {} l0), the pressure term adds {:+.3}",
             d.re_over_l0,

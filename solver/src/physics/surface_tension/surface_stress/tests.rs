@@ -1,0 +1,213 @@
+//! The surface stress on lattices where its result is known: a flat interface carries the
+//! typed tension (up to the colour kernel's lattice moment, computed here), no net force, and
+//! a bulk carries nothing; any cloud conserves linear momentum.
+
+use super::*;
+use crate::kernel::WendlandC2;
+use crate::neighbours::NeighbourSearch;
+use crate::periodic::PeriodicBox;
+
+const L0: f64 = 1e-4; // m
+const SIGMA: f64 = 0.05; // N/m
+const R_E: f64 = 4.2 * L0; // m: the colour kernel's support (the default cut-off)
+
+/// The colour kernel with support `R_E` (Wendland C2: support 2h).
+fn colour_kernel() -> WendlandC2 {
+    WendlandC2::new(R_E / 2.0)
+}
+
+/// Particles on the simple cubic lattice `(i + ½) l0` of an `nx × ny × nz` box, phase
+/// `phase_of(x)`, sorted by cell, with lists built (periodic along the axes in `periodic`).
+struct Cloud {
+    pos: Vec<Vec3>,
+    phase: Vec<u8>,
+    vol: Vec<f64>,
+    search: NeighbourSearch,
+}
+
+fn cloud(pos: Vec<Vec3>, phase_of: impl Fn(Vec3) -> u8, periodic: PeriodicBox) -> Cloud {
+    let mut search = NeighbourSearch::new(1.05 * L0 * 2.0, R_E, 0.3 * L0);
+    search.set_periodic(periodic);
+    let perm = search.sort_order(&pos).unwrap();
+    let pos: Vec<Vec3> = perm.iter().map(|&i| pos[i as usize]).collect();
+    search.build(&pos, pos.len()).unwrap();
+    let phase = pos.iter().map(|&x| phase_of(x)).collect();
+    let vol = vec![L0 * L0 * L0; pos.len()];
+    Cloud {
+        pos,
+        phase,
+        vol,
+        search,
+    }
+}
+
+fn lattice(n: [usize; 3]) -> Vec<Vec3> {
+    let mut v = Vec::new();
+    for k in 0..n[2] {
+        for j in 0..n[1] {
+            for i in 0..n[0] {
+                v.push(Vec3::new(i as f64 + 0.5, j as f64 + 0.5, k as f64 + 0.5) * L0);
+            }
+        }
+    }
+    v
+}
+
+fn evaluate(c: &Cloud, sigma: f64) -> StressScratch {
+    let inp = StressInput {
+        kernel: colour_kernel(),
+        pos: &c.pos,
+        vol: &c.vol,
+        phase: &c.phase,
+        n_fluid: c.pos.len(),
+        lists: &c.search.lists,
+    };
+    let mut s = StressScratch::default();
+    s.evaluate(&inp, 2, |a, b| if a != b { sigma } else { 0.0 });
+    s
+}
+
+/// The colour kernel's second moment on the lattice, `M = −V Σ_{δ≠0} W′(|δ|) δ_z²/|δ|` over
+/// the lattice offsets δ: 1 in the continuum (`−∫ z ∂_z W = ∫ W = 1`). A flat interface's
+/// `Σ V |G|` per area is `M` (each side's pairs straddling it give `M/2`).
+fn lattice_moment() -> f64 {
+    let k = colour_kernel();
+    let n = (R_E / L0).ceil() as i64 + 1;
+    let mut m = 0.0;
+    for i in -n..=n {
+        for j in -n..=n {
+            for l in -n..=n {
+                let d = Vec3::new(i as f64, j as f64, l as f64) * L0;
+                let r = d.norm();
+                if r > 0.0 {
+                    m -= L0.powi(3) * k.dw_dr(r) * d.z * d.z / r;
+                }
+            }
+        }
+    }
+    m
+}
+
+#[test]
+fn a_flat_interface_carries_the_typed_tension_and_no_force() {
+    // 10 × 10 × 20 periodic box: phase 0 below z = 10 l0, phase 1 above (two interfaces)
+    let n = [10, 10, 20];
+    let b = PeriodicBox::new([
+        Some([0.0, 10.0 * L0]),
+        Some([0.0, 10.0 * L0]),
+        Some([0.0, 20.0 * L0]),
+    ]);
+    let c = cloud(lattice(n), |x| u8::from(x.z > 10.0 * L0), b);
+    let s = evaluate(&c, SIGMA);
+    // the mechanical tension Σ V (T_xx − T_zz) per area of the two interfaces
+    let area = 100.0 * L0 * L0;
+    let tension: f64 = (0..c.pos.len())
+        .map(|i| c.vol[i] * (s.stress[i][0] - s.stress[i][2]))
+        .sum::<f64>()
+        / (2.0 * area);
+    let m = lattice_moment();
+    // the same lattice sum in another order: round-off of ~10⁴ terms
+    assert!(
+        (tension / (SIGMA * m) - 1.0).abs() < 1e-12,
+        "tension {tension} N/m against σM = {} N/m",
+        SIGMA * m
+    );
+    // the lattice's quadrature error of the kernel's moment at r_e = 4.2 l0: small, not zero
+    assert!((m - 1.0).abs() < 0.01, "M = {m}");
+    // xx and yy alike, no shear: the stress of a flat interface
+    for t in &s.stress {
+        assert!((t[0] - t[1]).abs() <= 1e-12 * t[0].abs());
+        assert!(t[2].abs() + t[3].abs() + t[4].abs() + t[5].abs() <= 1e-9 * SIGMA / L0);
+    }
+    // the energy estimate: σ per area of interface, up to the same moment
+    assert!((s.interface_energy_j / (2.0 * area * SIGMA * m) - 1.0).abs() < 1e-12);
+    // no force on a flat interface (by the lattice's symmetry; round-off of sums of σ l0 terms)
+    let scale = SIGMA * L0;
+    for f in &s.force {
+        assert!(f.norm() < 1e-10 * scale, "{f}");
+    }
+}
+
+#[test]
+fn a_bulk_carries_no_stress_however_its_particles_sit() {
+    // a sheared lattice (x += 0.3 z) of phase 0 around a block of phase 1: particles farther
+    // than the colour kernel's support from phase 1 have no stress and no force
+    let pos: Vec<Vec3> = lattice([16, 16, 16])
+        .into_iter()
+        .map(|x| Vec3::new(x.x + 0.3 * x.z, x.y, x.z))
+        .collect();
+    let in_block = |x: Vec3| x.z < 3.0 * L0;
+    let c = cloud(pos, |x| u8::from(in_block(x)), PeriodicBox::OPEN);
+    let s = evaluate(&c, SIGMA);
+    let far = |x: Vec3| x.z > 3.0 * L0 + 2.0 * R_E; // the stress's and the force's reach
+    let mut checked = 0;
+    for (i, x) in c.pos.iter().enumerate() {
+        if far(*x) {
+            assert_eq!(s.stress[i], [0.0; 6]);
+            assert_eq!(s.force[i], Vec3::zeros());
+            checked += 1;
+        }
+    }
+    assert!(checked > 1000, "{checked}");
+}
+
+#[test]
+fn linear_momentum_is_conserved_on_a_disordered_two_phase_cloud() {
+    // a jittered lattice with a sphere of phase 1: every pair force has its exact opposite
+    let mut state = 12345u64;
+    let mut rnd = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    let pos: Vec<Vec3> = lattice([14, 14, 14])
+        .into_iter()
+        .map(|x| x + Vec3::new(rnd(), rnd(), rnd()) * 0.4 * L0)
+        .collect();
+    let centre = Vec3::repeat(7.0 * L0);
+    let c = cloud(
+        pos,
+        |x| u8::from((x - centre).norm() < 4.5 * L0),
+        PeriodicBox::OPEN,
+    );
+    let s = evaluate(&c, SIGMA);
+    let total: Vec3 = s.force.iter().sum();
+    let magnitude: f64 = s.force.iter().map(|f| f.norm()).sum();
+    assert!(magnitude > 0.0);
+    // the pairs are added in another order on each side: round-off only
+    assert!(total.norm() < 1e-13 * magnitude, "{total} of {magnitude}");
+    // the tension pulls the sphere's surface inward: the radial force on phase 1 is negative
+    let radial: f64 = (0..c.pos.len())
+        .filter(|&i| c.phase[i] == 1)
+        .map(|i| s.force[i].dot(&(c.pos[i] - centre).normalize()))
+        .sum();
+    assert!(radial < 0.0, "{radial}");
+}
+
+#[test]
+fn the_same_bits_for_any_thread_count() {
+    let pos = lattice([12, 12, 12]);
+    let centre = Vec3::repeat(6.0 * L0);
+    let c = cloud(
+        pos,
+        |x| u8::from((x - centre).norm() < 4.0 * L0),
+        PeriodicBox::OPEN,
+    );
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| evaluate(&c, SIGMA))
+    };
+    let one = run(1);
+    for threads in [2, 3] {
+        let other = run(threads);
+        assert!(one.force == other.force && one.stress == other.stress);
+        assert_eq!(
+            one.interface_energy_j.to_bits(),
+            other.interface_energy_j.to_bits()
+        );
+    }
+}

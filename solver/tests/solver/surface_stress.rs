@@ -1,0 +1,195 @@
+//! The continuum surface stress in whole runs (docs/model.md §4a): chosen by name, refused
+//! where it has no meaning, conserving linear momentum, the same bits for any thread count,
+//! and pulling a drop round.
+
+use super::common::{block_scene, scene, ALUMINA_PLATE};
+use solver::{Scene, Simulation};
+
+/// A drop of liquid `a` (an ellipsoid, semi-axes `R (1 − e/2), R (1 − e/2), R (1 + e)` [m]
+/// about R = 4 l0) in a periodic box of liquid `b` of side `n l0`, both of density 1000 kg/m³,
+/// σ_ab = 0.05 N/m, at h = 1.3 l0 and r_e = 4.2 l0, with `effects` appended.
+fn drop_in_host(n: usize, e: f64, effects: &str) -> String {
+    let l0 = 1e-4;
+    let half = n as f64 * l0 / 2.0;
+    let r = 4.0 * l0;
+    let axes = format!(
+        "[{:e}, {:e}, {:e}]",
+        r * (1.0 - e / 2.0),
+        r * (1.0 - e / 2.0),
+        r * (1.0 + e)
+    );
+    format!(
+        r#"
+[discretisation]
+l0 = {l0:e}
+h_over_l0 = 1.3
+re_over_l0 = 4.2
+sound_speed = 5.0
+[time]
+end = 1.0e-3
+output_interval = 1.0e-4
+[effects]
+interfacial_tension = "surface_stress"
+{effects}
+[[liquid]]
+name = "a"
+density = 1000.0
+viscosity = 1.0e-3
+[[liquid]]
+name = "b"
+density = 1000.0
+viscosity = 1.0e-3
+[[interface]]
+liquids = ["a", "b"]
+tension = 0.05
+[[body]]
+name = "drop"
+liquid = "a"
+shape = {{ kind = "ellipsoid", center = [0.0, 0.0, 0.0], semi_axes = {axes} }}
+[[body]]
+name = "host"
+liquid = "b"
+shape = {{ kind = "box_around_ellipsoid", min = [{m:e}, {m:e}, {m:e}], max = [{p:e}, {p:e}, {p:e}], center = [0.0, 0.0, 0.0], semi_axes = {axes} }}
+[periodic]
+x = [{m:e}, {p:e}]
+y = [{m:e}, {p:e}]
+z = [{m:e}, {p:e}]
+"#,
+        m = -half,
+        p = half
+    )
+}
+
+fn error_of(text: &str) -> String {
+    match Scene::from_toml_str(text) {
+        Err(e) => e.to_string(),
+        Ok(s) => match Simulation::new(&s) {
+            Err(e) => e.to_string(),
+            Ok(_) => panic!("scene should have been refused:\n{text}"),
+        },
+    }
+}
+
+#[test]
+fn the_model_is_chosen_by_name_and_true_still_means_the_potential() {
+    let css = scene(&drop_in_host(12, 0.2, ""));
+    assert!(css.effects.interfacial_tension.is_surface_stress());
+    let potential = |v: &str| block_scene(6, 1e-4, &format!("interfacial_tension = {v}"), "");
+    assert_eq!(
+        scene(&potential("true")).effects,
+        scene(&potential("\"potential\"")).effects
+    );
+    // run records and checkpoints store the scene: the name survives a round trip
+    let text = toml::to_string(&css).unwrap();
+    assert!(
+        text.contains("interfacial_tension = \"surface_stress\""),
+        "{text}"
+    );
+    assert_eq!(scene(&text), css);
+    let old = toml::to_string(&scene(&potential("true"))).unwrap();
+    assert!(old.contains("interfacial_tension = true"), "{old}");
+    let msg = error_of(&drop_in_host(12, 0.2, "").replace("\"surface_stress\"", "\"surface\""));
+    assert!(
+        msg.contains("surface_stress") && msg.contains("potential"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn one_liquid_or_a_wall_is_refused_with_the_reason() {
+    // one liquid: a free surface against empty space would carry no tension
+    let one = block_scene(6, 1e-4, "interfacial_tension = \"surface_stress\"", "");
+    let msg = error_of(&one);
+    assert!(
+        msg.contains("effects.interfacial_tension") && msg.contains("second liquid"),
+        "{msg}"
+    );
+    // walls: no contact angles in this model yet
+    let open_box = drop_in_host(12, 0.2, "");
+    let open_box = &open_box[..open_box.find("[periodic]").unwrap()];
+    let two_with_wall = format!(
+        "{open_box}{}",
+        ALUMINA_PLATE
+            .replace("{ matte = 60.0 }", "{ a = 60.0, b = 60.0 }")
+            .replace("-6.0e-4", "-7.0e-4")
+    );
+    let msg = error_of(&two_with_wall);
+    assert!(
+        msg.contains("wall[plate]") && msg.contains("contact angles"),
+        "{msg}"
+    );
+}
+
+/// Runs `text` for `steps` steps on `threads` threads.
+fn run(text: &str, threads: usize, steps: usize) -> Simulation {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(|| {
+            let mut s = Simulation::new(&scene(text)).unwrap();
+            for _ in 0..steps {
+                s.step(f64::INFINITY).unwrap();
+            }
+            s
+        })
+}
+
+#[test]
+fn a_stretched_drop_is_pulled_round_conserving_momentum_and_bits() {
+    // R = 4 l0, stretched 20 % along z, in a 12³ periodic box (1728 particles)
+    let text = drop_in_host(
+        12,
+        0.2,
+        "artificial_viscosity = { alpha1 = 0.05, alpha2 = 0.0 }",
+    );
+    let one = run(&text, 1, 150);
+    let two = run(&text, 2, 150);
+    let flat = |s: &Simulation| -> Vec<u64> {
+        let p = &s.particles;
+        p.pos
+            .iter()
+            .chain(&p.vel)
+            .chain(&p.acc)
+            .flat_map(|v| v.iter().map(|x| x.to_bits()))
+            .collect()
+    };
+    assert_eq!(one.particles.id, two.particles.id);
+    assert!(
+        flat(&one) == flat(&two),
+        "states differ between 1 and 2 threads"
+    );
+    assert!(one.search.builds > 1, "the run must cover list rebuilds");
+
+    let o = one.observe();
+    // linear momentum: every pair force has its exact opposite; what is left is the rounding
+    // of sums of pair forces in two orders, against the momentum scale Σ m |v|
+    let p = &one.particles;
+    let scale: f64 = (0..p.n_fluid)
+        .map(|i| one.model.mass[p.phase[i] as usize] * p.vel[i].norm())
+        .sum();
+    let momentum = solver::state::Vec3::from(o.momentum_kg_m_s).norm();
+    assert!(
+        scale > 0.0 && momentum < 1e-12 * scale,
+        "{momentum} of {scale}"
+    );
+    // the tension pulls the stretched drop towards a sphere: its z extent shrinks, x grows
+    let drop = &o.phases[0];
+    let start = scene(&text);
+    let solver::scene::BodyShape::Ellipsoid { semi_axes, .. } = start.bodies[0].shape else {
+        unreachable!()
+    };
+    let aspect0 = semi_axes[2] / semi_axes[0];
+    let aspect = drop.extent_m[2] / drop.extent_m[0];
+    assert!(aspect < aspect0 - 0.05, "aspect {aspect} from {aspect0}");
+    // stable at the particle level: no pair closer than a third of the spacing
+    let l0 = one.model.l0_m;
+    let mut closest = f64::INFINITY;
+    for i in 0..p.n_fluid {
+        for j in one.search.lists.near(i) {
+            let d = one.search.lists.delta(p.pos[i], p.pos[j]).norm();
+            closest = closest.min(d);
+        }
+    }
+    assert!(closest > l0 / 3.0, "closest pair {:.3} l0", closest / l0);
+}

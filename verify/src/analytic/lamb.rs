@@ -80,6 +80,59 @@ pub fn lamb_period(l: u32, surface_tension_n_per_m: f64, density_kg_m3: f64, rad
     2.0 * PI / omega_rad_s
 }
 
+/// Angular frequency `ω_l` \[rad/s\] of the shape mode of degree `l` of an inviscid drop of
+/// density `ρ_i` inside an unbounded inviscid host liquid of density `ρ_o` \[kg/m³\], with the
+/// interfacial tension `σ` \[N/m\] and radius `R` \[m\]:
+/// `ω_l² = l(l−1)(l+1)(l+2) σ / (R³ ((l+1) ρ_i + l ρ_o))` (Lamb 1932 §275). A free drop is
+/// `ρ_o = 0` ([`lamb_angular_frequency`]), a bubble `ρ_i = 0`.
+///
+/// Returns `f64::NAN` for `l < 2`, a non-positive / non-finite `σ` or `R`, negative or
+/// non-finite densities, or both densities zero.
+pub fn lamb_angular_frequency_in_host(
+    l: u32,
+    surface_tension_n_per_m: f64,
+    drop_density_kg_m3: f64,
+    host_density_kg_m3: f64,
+    radius_m: f64,
+) -> f64 {
+    let density_ok = |d: f64| d.is_finite() && d >= 0.0;
+    if l < 2
+        || !is_positive_finite(surface_tension_n_per_m)
+        || !is_positive_finite(radius_m)
+        || !density_ok(drop_density_kg_m3)
+        || !density_ok(host_density_kg_m3)
+    {
+        return f64::NAN;
+    }
+    let d = f64::from(l);
+    let inertia = (d + 1.0) * drop_density_kg_m3 + d * host_density_kg_m3;
+    if inertia <= 0.0 {
+        return f64::NAN;
+    }
+    // Lamb (1932) §275: ω² = l(l−1)(l+1)(l+2)σ / (R³((l+1)ρ_i + lρ_o))
+    let omega_sq = d * (d - 1.0) * (d + 1.0) * (d + 2.0) * surface_tension_n_per_m
+        / (radius_m.powi(3) * inertia);
+    omega_sq.sqrt()
+}
+
+/// Period `2π/ω_l` \[s\] of [`lamb_angular_frequency_in_host`] (same arguments).
+pub fn lamb_period_in_host(
+    l: u32,
+    surface_tension_n_per_m: f64,
+    drop_density_kg_m3: f64,
+    host_density_kg_m3: f64,
+    radius_m: f64,
+) -> f64 {
+    2.0 * PI
+        / lamb_angular_frequency_in_host(
+            l,
+            surface_tension_n_per_m,
+            drop_density_kg_m3,
+            host_density_kg_m3,
+            radius_m,
+        )
+}
+
 /// Amplitude decay rate `γ_l` \[1/s\] of the shape mode of degree `l` of a weakly viscous drop
 /// (the amplitude behaves as `exp(−γ_l t)`).
 ///
@@ -283,5 +336,29 @@ mod tests {
         assert!(sphere_radius_from_volume(0.0).is_nan());
         assert!(sphere_radius_from_volume(f64::NAN).is_nan());
         assert!(cube_equivalent_radius(-1e-3).is_nan());
+    }
+
+    #[test]
+    fn a_drop_in_a_host_reduces_to_rayleigh_and_to_the_bubble() {
+        let (sigma, rho, r) = (0.0728, 997.0, 1e-3);
+        for l in 2..6 {
+            // no host: Rayleigh's drop (the same formula after (l+1) cancels)
+            let free = lamb_angular_frequency_in_host(l, sigma, rho, 0.0, r);
+            let rayleigh = lamb_angular_frequency(l, sigma, rho, r);
+            assert!((free / rayleigh - 1.0).abs() < 1e-14, "l = {l}");
+            // a bubble: ω² = (l−1)(l+1)(l+2)σ/(ρ_o R³) (Lamb 1932 §275)
+            let d = f64::from(l);
+            let bubble = ((d - 1.0) * (d + 1.0) * (d + 2.0) * sigma / (rho * r.powi(3))).sqrt();
+            let b = lamb_angular_frequency_in_host(l, sigma, 0.0, rho, r);
+            assert!((b / bubble - 1.0).abs() < 1e-14, "l = {l}");
+        }
+        // equal densities, l = 2: ω² = 24σ/(5ρR³); the period is 2π/ω
+        let w = lamb_angular_frequency_in_host(2, sigma, rho, rho, r);
+        assert!((w * w / (24.0 * sigma / (5.0 * rho * r.powi(3))) - 1.0).abs() < 1e-14);
+        let t = lamb_period_in_host(2, sigma, rho, rho, r);
+        assert!((t * w / (2.0 * PI) - 1.0).abs() < 1e-15);
+        assert!(lamb_angular_frequency_in_host(2, sigma, 0.0, 0.0, r).is_nan());
+        assert!(lamb_angular_frequency_in_host(1, sigma, rho, rho, r).is_nan());
+        assert!(lamb_angular_frequency_in_host(2, sigma, -1.0, rho, r).is_nan());
     }
 }

@@ -1,7 +1,7 @@
 //! The convergence case's figures and table: |error| against l0 (log–log, with slopes 1 and 2),
 //! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution).
 
-use super::judge::{cap_series, drop_series};
+use super::judge::{cap_series, css_period_series, drop_series};
 use super::measure::{DropPoint, Measured};
 use super::Series as ErrorSeries;
 use crate::report::plot::{self, Plot, Series, SeriesKind};
@@ -10,11 +10,27 @@ use std::path::Path;
 
 /// Draws every figure of the case and writes `table.md` into `dir`.
 pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
-    let mut all: Vec<ErrorSeries> = drop_series(&m.drops).into();
+    let mut all: Vec<ErrorSeries> = drop_series(&m.drops, "drop").into();
     all.extend(cap_series(&m.caps));
+    all.extend(css_period_series(&m.css_drops));
     error_against_spacing(&all, dir)?;
-    drop_histories(&m.drops, dir)?;
-    std::fs::write(dir.join("table.md"), drop_table(&m.drops))?;
+    drop_histories(
+        &m.drops,
+        "Free drop, l = 2: Q2 from 1 ms, per resolution",
+        "t / Rayleigh period",
+        &dir.join("drop_q2"),
+    )?;
+    let mut table = drop_table(&m.drops);
+    if !m.css_drops.is_empty() {
+        drop_histories(
+            &m.css_drops,
+            "Surface-stress drop in its host, l = 2: Q2 from 1 ms, per resolution",
+            "t / Lamb period in the host",
+            &dir.join("css_drop_q2"),
+        )?;
+        table.push_str(&css_drop_table(&m.css_drops));
+    }
+    std::fs::write(dir.join("table.md"), table)?;
     Ok(())
 }
 
@@ -72,8 +88,13 @@ fn error_against_spacing(all: &[ErrorSeries], dir: &Path) -> anyhow::Result<()> 
     )
 }
 
-/// Q2 over its value at 1 ms against t / Rayleigh period, per resolution.
-fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
+/// Q2 over its value at 1 ms against t over the reference period, per resolution, into `file`.
+fn drop_histories(
+    drops: &[DropPoint],
+    title: &str,
+    x_label: &str,
+    file: &Path,
+) -> anyhow::Result<()> {
     let series = drops
         .iter()
         .enumerate()
@@ -85,7 +106,7 @@ fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
                 points: t
                     .iter()
                     .zip(q)
-                    .map(|(t, q)| (t / d.rayleigh_period_s, q / q0))
+                    .map(|(t, q)| (t / d.reference_period_s, q / q0))
                     .collect(),
                 kind: SeriesKind::Line,
                 color: k + 1,
@@ -94,15 +115,15 @@ fn drop_histories(drops: &[DropPoint], dir: &Path) -> anyhow::Result<()> {
         .collect();
     plot::draw(
         &Plot {
-            title: "Free drop, l = 2: Q2 from 1 ms, per resolution".into(),
-            x_label: "t / Rayleigh period".into(),
+            title: title.into(),
+            x_label: x_label.into(),
             y_label: "Q2 / Q2(1 ms)".into(),
             series,
             x_range: None,
             y_range: None,
             hlines: vec![(0.0, "a liquid settles at 0".into())],
         },
-        &dir.join("drop_q2"),
+        file,
     )
 }
 
@@ -129,16 +150,54 @@ fn drop_table(drops: &[DropPoint]) -> String {
             d.run.info.scene.discretisation.l0 * 1e6,
             d.run.info.fluid_particles,
             p * 1e3,
-            d.rayleigh_period_s * 1e3,
-            100.0 * (p / d.rayleigh_period_s - 1.0),
-            100.0 * (d.elastic_periods_s[0] / d.rayleigh_period_s - 1.0),
-            100.0 * (d.elastic_periods_s[1] / d.rayleigh_period_s - 1.0),
+            d.reference_period_s * 1e3,
+            100.0 * (p / d.reference_period_s - 1.0),
+            100.0 * (d.elastic_periods_s[0] / d.reference_period_s - 1.0),
+            100.0 * (d.elastic_periods_s[1] / d.reference_period_s - 1.0),
             g,
             g / d.lamb_physical_per_s,
             g / d.lamb_with_av_per_s,
             b,
             pe * 1e3,
-            100.0 * (pe / d.rayleigh_period_s - 1.0),
+            100.0 * (pe / d.reference_period_s - 1.0),
+            ge,
+            d.run.info.wall_time_s
+        );
+    }
+    s
+}
+
+/// The surface-stress drop's table: R/l0, spacing, the drop's and all particles, period,
+/// Lamb's in the host, error, decay rate, Q2 offset, the z-extent's fit, wall time.
+fn css_drop_table(drops: &[DropPoint]) -> String {
+    let mut s = String::from(
+        "\n## The same drop under the continuum surface stress, in a host of equal density (docs/model.md §4a)\n\n\
+         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | Lamb in the host [ms] | error | decay rate [1/s] | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for d in drops {
+        let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
+            (f.period_s, f.damping_rate_per_s, f.offset)
+        });
+        let (pe, ge) = d
+            .extent_fit
+            .as_ref()
+            .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
+        let t = d.reference_period_s;
+        let _ = writeln!(
+            s,
+            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
+            d.r_over_l0,
+            d.run.info.scene.discretisation.l0 * 1e6,
+            d.drop_particles,
+            d.run.info.fluid_particles,
+            p * 1e3,
+            t * 1e3,
+            100.0 * (p / t - 1.0),
+            g,
+            b,
+            pe * 1e3,
+            100.0 * (pe / t - 1.0),
             ge,
             d.run.info.wall_time_s
         );

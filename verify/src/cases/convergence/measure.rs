@@ -19,15 +19,18 @@ pub struct DropPoint<'r> {
     pub run: &'r RunData,
     /// `R/l0` with the nominal radius [-].
     pub r_over_l0: f64,
-    /// Rayleigh's l = 2 period for the drop's volume (particles × l0³) [s].
-    pub rayleigh_period_s: f64,
+    /// The drop's particles (without the surface-stress drop's host).
+    pub drop_particles: usize,
+    /// The l = 2 period for the drop's volume (its particles × l0³) [s]: Rayleigh's for the
+    /// free drop, Lamb's in a host for the surface-stress drop.
+    pub reference_period_s: f64,
     /// Rayleigh's period shortened by the reference lattice's shear moduli at the run's setting
     /// (Rayleigh–Ritz, [`elastic_drop`]): with `C′`, which a stretch along the lattice's axis
     /// loads (this drop's), and with `C44` (a body diagonal) [s]; NaN without the potential.
     pub elastic_periods_s: [f64; 2],
-    /// Lamb's l = 2 decay rate with the physical ν alone [1/s].
+    /// Lamb's l = 2 decay rate with the physical ν alone [1/s] (NaN in a host: no reference).
     pub lamb_physical_per_s: f64,
-    /// Lamb's l = 2 decay rate with ν + ν_AV (α1 h c/10) [1/s].
+    /// Lamb's l = 2 decay rate with ν + ν_AV (α1 h c/10) [1/s] (NaN in a host).
     pub lamb_with_av_per_s: f64,
     /// Times [s] and Q2 [-] of the series fitted (from [`FIT_FROM_S`]).
     pub series: (Vec<f64>, Vec<f64>),
@@ -61,44 +64,88 @@ pub struct CapPoint<'r> {
 
 /// Every run of the case, measured.
 pub struct Measured<'r> {
-    /// Free drops, coarsest first.
+    /// Free drops (the pairwise potential), coarsest first.
     pub drops: Vec<DropPoint<'r>>,
+    /// Drops under the continuum surface stress, in their host, coarsest first.
+    pub css_drops: Vec<DropPoint<'r>>,
     /// Caps, by angle then coarsest first.
     pub caps: Vec<CapPoint<'r>>,
 }
 
-/// Measures the runs (drops have no wall, caps have one).
+/// Whether `run` is a drop under the continuum surface stress.
+fn surface_stress(run: &RunData) -> bool {
+    run.info
+        .scene
+        .effects
+        .interfacial_tension
+        .is_surface_stress()
+}
+
+/// Measures the runs (drops have no wall, caps have one; the surface stress's drops have a
+/// host).
 pub fn measure(runs: &[RunData]) -> Measured<'_> {
-    let mut m = Measured {
-        drops: runs
+    let drops = |css: bool| -> Vec<DropPoint> {
+        let mut v: Vec<DropPoint> = runs
             .iter()
-            .filter(|r| r.info.scene.walls.is_empty())
+            .filter(|r| r.info.scene.walls.is_empty() && surface_stress(r) == css)
             .map(drop_point)
-            .collect(),
+            .collect();
+        v.sort_by(|a, b| a.r_over_l0.total_cmp(&b.r_over_l0));
+        v
+    };
+    let mut m = Measured {
+        drops: drops(false),
+        css_drops: drops(true),
         caps: runs
             .iter()
             .filter(|r| !r.info.scene.walls.is_empty())
             .map(cap_point)
             .collect(),
     };
-    m.drops.sort_by(|a, b| a.r_over_l0.total_cmp(&b.r_over_l0));
     m.caps
         .sort_by(|a, b| (a.typed_deg, a.n).partial_cmp(&(b.typed_deg, b.n)).unwrap());
     m
 }
 
-/// The drop's volume: its particles' rest volume l0³ [m³].
+/// A cap's volume: its particles' rest volume l0³ [m³].
 fn volume_m3(run: &RunData) -> f64 {
     let l0 = run.info.scene.discretisation.l0;
     run.info.fluid_particles as f64 * l0 * l0 * l0
 }
 
+/// The drop's particles: the first liquid's count at the start (all of a free drop's).
+fn drop_particles(run: &RunData) -> usize {
+    let liquid = &run.info.scene.liquids[0].name;
+    let count = run.timeseries.liquid_column(liquid, LiquidColumn::Count);
+    count.first().map_or(0, |&c| c as usize)
+}
+
 fn drop_point(run: &RunData) -> DropPoint<'_> {
     let scene = &run.info.scene;
     let liquid = &scene.liquids[0];
-    let radius = lamb::sphere_radius_from_volume(volume_m3(run));
-    let sigma = liquid.surface_tension.unwrap_or(f64::NAN);
-    let nu = liquid.viscosity / liquid.density;
+    let l0 = scene.discretisation.l0;
+    let n_drop = drop_particles(run);
+    // the drop's volume: its particles' rest volume l0³
+    let radius = lamb::sphere_radius_from_volume(n_drop as f64 * l0 * l0 * l0);
+    let css = surface_stress(run);
+    let host = scene.liquids.get(1);
+    let sigma = match host.filter(|_| css) {
+        Some(h) => scene
+            .interface_tension(&liquid.name, &h.name)
+            .unwrap_or(f64::NAN),
+        None => liquid.surface_tension.unwrap_or(f64::NAN),
+    };
+    let reference_period_s = match host.filter(|_| css) {
+        Some(h) => lamb::lamb_period_in_host(2, sigma, liquid.density, h.density, radius),
+        None => lamb::lamb_period(2, sigma, liquid.density, radius),
+    };
+    // Lamb's decay is a free drop's: in a viscous host the interface's boundary layer adds
+    // its own, with no closed form here
+    let nu = if css {
+        f64::NAN
+    } else {
+        liquid.viscosity / liquid.density
+    };
     let t = run
         .probes
         .column(&RunColumn::Time.name())
@@ -113,12 +160,12 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         .liquid_column(&liquid.name, LiquidColumn::Extent(Axis::Z));
     let efrom = ts.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(ts.len());
     let en = ts.len().min(extent.len()).max(efrom);
-    let rayleigh_period_s = lamb::lamb_period(2, sigma, liquid.density, radius);
     DropPoint {
         run,
-        r_over_l0: RADIUS_M / scene.discretisation.l0,
-        rayleigh_period_s,
-        elastic_periods_s: elastic_periods_s(scene, rayleigh_period_s, sigma, radius),
+        r_over_l0: RADIUS_M / l0,
+        drop_particles: n_drop,
+        reference_period_s,
+        elastic_periods_s: elastic_periods_s(scene, reference_period_s, sigma, radius),
         lamb_physical_per_s: lamb::lamb_damping_rate(2, nu, radius),
         // the artificial viscosity's effective ν ≈ α1 h c/10 (Monaghan 1992)
         lamb_with_av_per_s: lamb::lamb_damping_rate(

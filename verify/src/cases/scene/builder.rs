@@ -156,6 +156,12 @@ impl SceneBuilder {
         self
     }
 
+    /// The tension model: off, the pairwise potential, or the continuum surface stress.
+    pub fn tension_model(mut self, model: solver::scene::TensionModel) -> Self {
+        self.scene.effects.interfacial_tension = model;
+        self
+    }
+
     /// The short-range liquid–wall repulsion on or off.
     pub fn wall_repulsion(mut self, on: bool) -> Self {
         self.scene.effects.wall_repulsion = on;

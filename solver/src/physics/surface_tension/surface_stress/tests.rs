@@ -112,8 +112,9 @@ fn a_flat_interface_carries_the_typed_tension_and_no_force() {
         "tension {tension} N/m against σM = {} N/m",
         SIGMA * m
     );
-    // the lattice's quadrature error of the kernel's moment at r_e = 4.2 l0: small, not zero
-    assert!((m - 1.0).abs() < 0.01, "M = {m}");
+    // the lattice's quadrature error of the colour kernel's moment at h_c = 2.1 l0 is 4e-4
+    // (this sum: 1.0004), so the flat lattice interface carries the typed σ to that
+    assert!((m - 1.0).abs() < 1e-3, "M = {m}");
     // xx and yy alike, no shear: the stress of a flat interface
     for t in &s.stress {
         assert!((t[0] - t[1]).abs() <= 1e-12 * t[0].abs());

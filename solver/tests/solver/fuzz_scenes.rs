@@ -8,8 +8,9 @@ use proptest::prelude::*;
 use solver::{Scene, SceneError, SimError, Simulation};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-const BASES: [&str; 4] = [
+const BASES: [&str; 5] = [
     include_str!("../../../scenes/cube_drop.toml"),
+    include_str!("../../../scenes/drop_in_host.toml"),
     include_str!("../../../scenes/drop_on_plate.toml"),
     include_str!("../../../scenes/matte_slag_doublet.toml"),
     r#"

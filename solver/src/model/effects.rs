@@ -1,9 +1,20 @@
 //! The effects built for a run, resolved from the scene's `[effects]`, `[density]` and walls.
 
 use crate::scene::{
-    DensityScheme, ImplicitViscosity, LaminarForm, NegativePressure, Reinit, Scene, WallBoundary,
+    DensityScheme, ImplicitViscosity, LaminarForm, NegativePressure, Reinit, Scene, TensionModel,
+    WallBoundary,
 };
 use serde::Serialize;
+
+/// The form of a continuum tension between liquid phases (docs/model.md §4a, §4b).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum ContinuumForm {
+    /// The capillary stress in pair form (Hu & Adams 2006): momentum-conserving, with a
+    /// tangential tension.
+    Stress,
+    /// The force `σκ∇c` (Brackbill et al. 1992): normal only.
+    Force,
+}
 
 /// The effects built for a run. Anything not listed here is not computed at all.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -21,8 +32,8 @@ pub struct Effects {
     pub artificial_viscosity: Option<(f64, f64)>,
     /// Pairwise-potential surface and interfacial tension.
     pub interfacial_tension: bool,
-    /// Continuum-surface-stress tension between liquid phases.
-    pub surface_stress: bool,
+    /// A continuum tension between liquid phases, in this form, if any.
+    pub continuum_tension: Option<ContinuumForm>,
     /// Wall particles (pressure extrapolation; with tension also wetting).
     pub walls: bool,
     /// Some wall is no-slip.
@@ -53,7 +64,11 @@ impl Effects {
                 .as_ref()
                 .map(|a| (a.alpha1, a.alpha2)),
             interfacial_tension: e.interfacial_tension.is_potential(),
-            surface_stress: e.interfacial_tension.is_surface_stress(),
+            continuum_tension: match e.interfacial_tension {
+                TensionModel::SurfaceStress => Some(ContinuumForm::Stress),
+                TensionModel::SurfaceForce => Some(ContinuumForm::Force),
+                TensionModel::Off | TensionModel::Potential => None,
+            },
             walls: !scene.walls.is_empty(),
             wall_repulsion: e.wall_repulsion,
             particle_shifting: e.particle_shifting.as_ref().map(|p| p.coefficient),
@@ -111,8 +126,14 @@ impl Effects {
         if self.interfacial_tension {
             v.push("interfacial tension (pairwise potential, Fowkes pairs)".into());
         }
-        if self.surface_stress {
-            v.push("interfacial tension (continuum surface stress between liquids)".into());
+        match self.continuum_tension {
+            Some(ContinuumForm::Stress) => {
+                v.push("interfacial tension (continuum surface stress between liquids)".into())
+            }
+            Some(ContinuumForm::Force) => {
+                v.push("interfacial tension (continuum surface force between liquids)".into())
+            }
+            None => {}
         }
         if self.walls {
             let slip = if self.no_slip_walls {

@@ -6,7 +6,7 @@ mod effects;
 pub mod pairs;
 mod walls;
 
-pub use effects::Effects;
+pub use effects::{ContinuumForm, Effects};
 pub use walls::WallSolid;
 
 use crate::kernel::{Kernel, KernelKind};
@@ -173,16 +173,17 @@ impl Model {
             })
             .collect();
         let support_m = scene.kernel_support();
-        let surface_stress_sigma = if effects.surface_stress {
+        let surface_stress_sigma = if effects.continuum_tension.is_some() {
             pairs::surface_stress_table(scene)
         } else {
             Vec::new()
         };
-        let interaction_radius_m = if effects.interfacial_tension || effects.surface_stress {
-            r_e
-        } else {
-            support_m
-        };
+        let interaction_radius_m =
+            if effects.interfacial_tension || effects.continuum_tension.is_some() {
+                r_e
+            } else {
+                support_m
+            };
         let neighbour_skin_m = d.neighbour_skin_over_l0 * l0;
         let periodic = scene.periodic.to_box();
         check_period(
@@ -326,7 +327,7 @@ impl Model {
                         * (self.rho0[a] * h * h * h / (2.0 * std::f64::consts::PI * sigma)).sqrt()
                 })
                 .reduce(f64::min)
-        } else if self.effects.surface_stress {
+        } else if self.effects.continuum_tension.is_some() {
             self.surface_stress_step_limit()
         } else {
             None

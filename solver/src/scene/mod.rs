@@ -365,7 +365,9 @@ pub struct Effects {
     /// Surface and interfacial tension: `true` or `"potential"` — the pairwise potential
     /// (Eq. 15, Natsui 2021) with Fowkes pair strengths, also wetting of walls;
     /// `"surface_stress"` — the continuum surface stress between liquid phases (Lafaurie et al.
-    /// 1994, Hu & Adams 2006; docs/model.md §4a), no walls yet; `false` (the default): none.
+    /// 1994, Hu & Adams 2006; docs/model.md §4a), no walls yet; `"surface_force"` — the
+    /// continuum surface force between liquid phases (Brackbill et al. 1992; §4b), no walls
+    /// yet; `false` (the default): none.
     #[serde(default)]
     pub interfacial_tension: TensionModel,
     /// A short-range liquid–wall repulsion that does not depend on the kernel (Monaghan 1994's
@@ -397,6 +399,8 @@ pub enum TensionModel {
     Potential,
     /// The continuum surface stress between liquid phases (`"surface_stress"`).
     SurfaceStress,
+    /// The continuum surface force between liquid phases (`"surface_force"`).
+    SurfaceForce,
 }
 
 impl TensionModel {
@@ -407,6 +411,13 @@ impl TensionModel {
     /// Whether the continuum surface stress is built.
     pub fn is_surface_stress(self) -> bool {
         self == TensionModel::SurfaceStress
+    }
+    /// Whether a continuum model between liquid phases (the surface stress or force) is built.
+    pub fn is_continuum(self) -> bool {
+        matches!(
+            self,
+            TensionModel::SurfaceStress | TensionModel::SurfaceForce
+        )
     }
     /// Whether some tension model is built.
     pub fn is_on(self) -> bool {
@@ -427,12 +438,13 @@ impl From<bool> for TensionModel {
 
 impl Serialize for TensionModel {
     /// `false`, `true` (the potential: scenes and run records written before the second model
-    /// read and compare unchanged) or `"surface_stress"`.
+    /// read and compare unchanged), `"surface_stress"` or `"surface_force"`.
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {
             TensionModel::Off => s.serialize_bool(false),
             TensionModel::Potential => s.serialize_bool(true),
             TensionModel::SurfaceStress => s.serialize_str("surface_stress"),
+            TensionModel::SurfaceForce => s.serialize_str("surface_force"),
         }
     }
 }
@@ -443,7 +455,7 @@ impl<'de> Deserialize<'de> for TensionModel {
         impl serde::de::Visitor<'_> for V {
             type Value = TensionModel;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("true, false, \"potential\" or \"surface_stress\"")
+                f.write_str("true, false, \"potential\", \"surface_stress\" or \"surface_force\"")
             }
             fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<TensionModel, E> {
                 Ok(v.into())
@@ -452,6 +464,7 @@ impl<'de> Deserialize<'de> for TensionModel {
                 match v {
                     "potential" => Ok(TensionModel::Potential),
                     "surface_stress" => Ok(TensionModel::SurfaceStress),
+                    "surface_force" => Ok(TensionModel::SurfaceForce),
                     _ => Err(E::invalid_value(serde::de::Unexpected::Str(v), &self)),
                 }
             }

@@ -3,7 +3,8 @@
 //! simulation is built ([`crate::Simulation::new`]).
 
 use super::{
-    shapes::on_lattice_plane, DensityScheme, LaminarForm, Reinit, Scene, SceneError, WallBoundary,
+    shapes::on_lattice_plane, DensityScheme, LaminarForm, Reinit, Scene, SceneError, TensionModel,
+    WallBoundary,
 };
 use std::collections::BTreeSet;
 
@@ -624,8 +625,8 @@ fn tension_inputs(s: &Scene) -> R {
             used.insert(&c.liquids[1]);
         }
     }
-    if model.is_surface_stress() {
-        surface_stress_inputs(s, used.len())?;
+    if model.is_continuum() {
+        continuum_inputs(s, model, used.len())?;
     }
     for l in s.liquids.iter().filter(|_| model.is_potential()) {
         if l.surface_tension.is_none() {
@@ -666,26 +667,35 @@ fn tension_inputs(s: &Scene) -> R {
     Ok(())
 }
 
-/// The surface stress's own limits: it acts across interfaces between liquid phases, so a
-/// scene needs at least two liquids in its bodies (a liquid's free surface against empty space
-/// carries no tension: the surrounding gas is declared as a liquid); contact angles on walls
-/// are not built for it yet.
-fn surface_stress_inputs(s: &Scene, liquids_used: usize) -> R {
+/// The continuum models' own limits (the surface stress and the surface force): they act
+/// across interfaces between liquid phases, so a scene needs at least two liquids in its
+/// bodies (a liquid's free surface against empty space carries no tension: the surrounding gas
+/// is declared as a liquid); contact angles on walls are not built for them yet.
+fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
+    let name = match model {
+        TensionModel::SurfaceForce => "surface_force",
+        _ => "surface_stress",
+    };
     if liquids_used < 2 {
         return Err(SceneError::invalid(
             "effects.interfacial_tension",
-            "\"surface_stress\"",
-            "the surface stress acts across interfaces between liquid phases and a free surface \
-             against empty space carries none: declare the surrounding fluid as a second liquid \
-             and give the pair's [[interface]] tension",
+            format!("\"{name}\""),
+            format!(
+                "the {} acts across interfaces between liquid phases and a free surface \
+                 against empty space carries none: declare the surrounding fluid as a second \
+                 liquid and give the pair's [[interface]] tension",
+                name.replace('_', " ")
+            ),
         ));
     }
     if let Some(w) = s.walls.first() {
         return Err(SceneError::invalid(
             format!("wall[{}]", w.name),
             "present",
-            "contact angles are not built for effects.interfacial_tension = \"surface_stress\" \
-             yet: use the potential (true) for scenes with walls",
+            format!(
+                "contact angles are not built for effects.interfacial_tension = \"{name}\" \
+                 yet: use the potential (true) for scenes with walls"
+            ),
         ));
     }
     Ok(())

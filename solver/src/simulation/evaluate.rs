@@ -3,6 +3,7 @@
 
 use super::Simulation;
 use crate::kernel::Kernel;
+use crate::model::ContinuumForm;
 use crate::observables::compression_energy;
 use crate::physics::surface_tension::surface_stress::StressInput;
 use crate::physics::{density, walls};
@@ -73,17 +74,18 @@ impl Simulation {
         let mut acc = std::mem::take(&mut self.particles.acc);
         let mut drho = std::mem::take(&mut self.drho_next);
         self.dissipation.power = self.pair_forces::<K>(&mut acc, &mut drho);
-        if self.model.effects.surface_stress {
-            self.add_surface_stress::<K>(&mut acc);
+        if let Some(form) = self.model.effects.continuum_tension {
+            self.add_continuum_tension::<K>(form, &mut acc);
         }
         self.particles.acc = acc;
         self.drho_next = drho;
         self.timings.forces_s += t1.elapsed().as_secs_f64();
     }
 
-    /// Adds the continuum surface stress's accelerations [m/s²] of the current state to `acc`
-    /// (docs/model.md §4a): its colour kernel is the run's kernel with support `r_e`.
-    fn add_surface_stress<K: Kernel>(&mut self, acc: &mut [Vec3]) {
+    /// Adds the continuum tension's accelerations [m/s²] of the current state to `acc`, in the
+    /// form `form` (docs/model.md §4a, §4b): its colour kernel is the run's kernel with support
+    /// `r_e`.
+    fn add_continuum_tension<K: Kernel>(&mut self, form: ContinuumForm, acc: &mut [Vec3]) {
         let m = &self.model;
         let p = &self.particles;
         let support_over_h = K::new(1.0).support_m();
@@ -95,9 +97,17 @@ impl Simulation {
             n_fluid: p.n_fluid,
             lists: &self.search.lists,
         };
-        self.surface_stress
-            .evaluate(&inp, m.n_liquids, |a, b| m.surface_stress_sigma(a, b));
-        let force = &self.surface_stress.force;
+        let sigma = |a, b| m.surface_stress_sigma(a, b);
+        let force = match form {
+            ContinuumForm::Stress => {
+                self.surface_stress.evaluate(&inp, m.n_liquids, sigma);
+                &self.surface_stress.force
+            }
+            ContinuumForm::Force => {
+                self.surface_force.evaluate(&inp, m.n_liquids, sigma);
+                &self.surface_force.force
+            }
+        };
         acc.par_iter_mut()
             .zip(force.par_iter().zip(p.phase.par_iter()))
             .for_each(|(a, (f, &ph))| *a += f / m.mass[ph as usize]);

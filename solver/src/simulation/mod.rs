@@ -94,6 +94,8 @@ pub struct Simulation {
     far_spills: crate::physics::forces::pairs_once::Spills,
     /// The continuum surface stress of the current state (empty without it).
     pub surface_stress: crate::physics::surface_tension::surface_stress::StressScratch,
+    /// The continuum surface force's scratch (empty unless the scene chose it).
+    pub surface_force: crate::physics::surface_tension::surface_force::ForceScratch,
     /// Scratch of the fluid's re-sort, kept between rebuilds.
     rebuild: neighbours::RebuildScratch,
     /// The implicit viscous solves of this process (zero without implicit viscosity).
@@ -166,6 +168,7 @@ impl Simulation {
             drho_next,
             far_spills: Default::default(),
             surface_stress: Default::default(),
+            surface_force: Default::default(),
             rebuild: Default::default(),
             viscous_solves: Default::default(),
             viscous: Default::default(),
@@ -313,7 +316,7 @@ impl Simulation {
             &self.model,
             &self.particles,
             &self.search.lists,
-            self.surface_stress.interface_energy_j,
+            self.surface_stress.interface_energy_j + self.surface_force.interface_energy_j,
             &self.dissipation,
             self.time_s,
             self.last_dt_s,

@@ -69,3 +69,14 @@ pub fn advance(sim: &mut Simulation, steps: usize) {
         sim.step(f64::INFINITY).expect("step");
     }
 }
+
+/// The error message of building `text`, which must fail (at parsing, validation or setup).
+pub fn error_of(text: &str) -> String {
+    match Scene::from_toml_str(text) {
+        Err(e) => e.to_string(),
+        Ok(scene) => match Simulation::new(&scene) {
+            Err(e) => e.to_string(),
+            Ok(_) => panic!("scene should have been refused:\n{text}"),
+        },
+    }
+}

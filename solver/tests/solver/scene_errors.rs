@@ -1,19 +1,8 @@
 //! Each kind of invalid scene is refused with a message that names the field and the value —
 //! never a panic, never a silent default.
 
-use super::common::block_scene;
+use super::common::{block_scene, error_of};
 use solver::{Scene, SimError, Simulation};
-
-/// The error message of building `text`, which must fail.
-fn error_of(text: &str) -> String {
-    match Scene::from_toml_str(text) {
-        Err(e) => e.to_string(),
-        Ok(scene) => match Simulation::new(&scene) {
-            Err(e) => e.to_string(),
-            Ok(_) => panic!("scene should have been refused:\n{text}"),
-        },
-    }
-}
 
 fn assert_names(text: &str, parts: &[&str]) {
     let msg = error_of(text);

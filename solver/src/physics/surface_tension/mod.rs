@@ -1,5 +1,6 @@
 //! Surface and interfacial tension: by a pairwise interparticle potential (the paper's model),
-//! or by the continuum surface stress between liquid phases ([`surface_stress`]).
+//! or by a continuum model between liquid phases: the surface stress ([`surface_stress`]) or
+//! the surface force ([`surface_force`]).
 //!
 //! The potential is Kondo et al. (2007)'s, used in 3D SPH by Natsui et al. (2016, 2021): a pair
 //! force `C_ij P'(r_ij) e_ij`, repulsive below `l0`, attractive between `l0` and `r_e`
@@ -10,7 +11,10 @@
 pub mod force;
 pub mod fowkes;
 pub mod potential;
+pub mod surface_force;
 pub mod surface_stress;
+#[cfg(test)]
+mod test_cloud;
 
 pub use force::{far_pair_forces, PairwisePotential};
 pub use fowkes::PairTable;

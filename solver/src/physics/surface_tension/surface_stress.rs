@@ -72,15 +72,15 @@ pub struct StressInput<'a, K: Kernel> {
 }
 
 impl<K: Kernel> StressInput<'_, K> {
-    /// Calls `pair(j, ∇_i W_c(r_ij))` [1/m⁴] for every fluid `j > i` within the colour
+    /// Calls `pair(j, ∇_i W_c(r_ij) [1/m⁴], r_ij [m])` for every fluid `j > i` within the colour
     /// kernel's support for which `wanted(j)`, in list order (the near part's `j > i`, then
     /// the far part); `wanted` is asked first, so that unwanted pairs cost no geometry.
     #[inline(always)]
-    fn each_later_neighbour(
+    pub(super) fn each_later_neighbour(
         &self,
         i: usize,
         wanted: impl Fn(usize) -> bool,
-        mut pair: impl FnMut(usize, Vec3),
+        mut pair: impl FnMut(usize, Vec3, Vec3),
     ) {
         let cut = self.kernel.support_m();
         let cut2 = cut * cut;
@@ -96,7 +96,7 @@ impl<K: Kernel> StressInput<'_, K> {
                 continue;
             }
             let r = r2.sqrt();
-            pair(j, d * (self.kernel.dw_dr(r) / r));
+            pair(j, d * (self.kernel.dw_dr(r) / r), d);
         }
     }
 
@@ -109,7 +109,7 @@ impl<K: Kernel> StressInput<'_, K> {
             let mut g = Vec3::zeros();
             // only pairs with one particle in b (the colour differs across them)
             let across = |j: usize| (self.phase[j] == b) != in_b;
-            self.each_later_neighbour(i, across, |j, grad_w| {
+            self.each_later_neighbour(i, across, |j, grad_w, _| {
                 if in_b {
                     // G_j^b gains V_i ∇_j W_ji = −V_i ∇_i W_ij
                     reactions.subtract(j, grad_w * self.vol[i]);
@@ -132,7 +132,7 @@ impl<K: Kernel> StressInput<'_, K> {
             let mut f = Vec3::zeros();
             // the bulk of a phase has no stress on either side of its pairs
             let stressed = |j: usize| !(ti_zero && zero(&stress[j]));
-            self.each_later_neighbour(i, stressed, |j, grad_w| {
+            self.each_later_neighbour(i, stressed, |j, grad_w, _| {
                 let tj = &stress[j];
                 let s: SymTensor = std::array::from_fn(|k| ti[k] + tj[k]);
                 let fij = apply(&s, grad_w) * (self.vol[i] * self.vol[j]);

@@ -1,9 +1,9 @@
 //! The convergence case's figures and table: |error| against l0 (log–log, with slopes 1 and 2),
 //! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution).
 
-use super::judge::{cap_series, css_period_series, drop_series};
+use super::judge::{cap_series, drop_series, host_period_series};
 use super::measure::{DropPoint, Measured};
-use super::Series as ErrorSeries;
+use super::{HostModel, Series as ErrorSeries};
 use crate::report::plot::{self, Plot, Series, SeriesKind};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -12,7 +12,7 @@ use std::path::Path;
 pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
     let mut all: Vec<ErrorSeries> = drop_series(&m.drops, "drop").into();
     all.extend(cap_series(&m.caps));
-    all.extend(css_period_series(&m.css_drops));
+    all.extend(host_period_series(m));
     error_against_spacing(&all, dir)?;
     drop_histories(
         &m.drops,
@@ -21,14 +21,18 @@ pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
         &dir.join("drop_q2"),
     )?;
     let mut table = drop_table(&m.drops);
-    if !m.css_drops.is_empty() {
+    for (h, drops) in &m.host_drops {
+        let (first, rest) = h.label.split_at(1);
         drop_histories(
-            &m.css_drops,
-            "Surface-stress drop in its host, l = 2: Q2 from 1 ms, per resolution",
+            drops,
+            &format!(
+                "{}{rest} in its host, l = 2: Q2 from 1 ms, per resolution",
+                first.to_uppercase()
+            ),
             "t / Lamb period in the host",
-            &dir.join("css_drop_q2"),
+            &dir.join(format!("{}_drop_q2", h.id)),
         )?;
-        table.push_str(&css_drop_table(&m.css_drops));
+        table.push_str(&host_drop_table(h, drops));
     }
     std::fs::write(dir.join("table.md"), table)?;
     Ok(())
@@ -127,6 +131,19 @@ fn drop_histories(
     )
 }
 
+/// A drop's fits: the period [s], decay rate [1/s] and offset [-] of Q2's, the period [s] and
+/// decay rate [1/s] of the z-extent's (NaN where a fit failed).
+fn fitted(d: &DropPoint) -> ([f64; 3], [f64; 2]) {
+    let q2 = d.fit.as_ref().map_or([f64::NAN; 3], |f| {
+        [f.period_s, f.damping_rate_per_s, f.offset]
+    });
+    let extent = d
+        .extent_fit
+        .as_ref()
+        .map_or([f64::NAN; 2], |f| [f.period_s, f.damping_rate_per_s]);
+    (q2, extent)
+}
+
 /// The drop's table: R/l0, particles, period, error, the elastic drop's error bracket, decay
 /// rate and its ratio to Lamb's with the physical ν alone (all from Q2), the same from the
 /// z-extent, wall time.
@@ -136,13 +153,7 @@ fn drop_table(drops: &[DropPoint]) -> String {
          |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for d in drops {
-        let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
-            (f.period_s, f.damping_rate_per_s, f.offset)
-        });
-        let (pe, ge) = d
-            .extent_fit
-            .as_ref()
-            .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
+        let ([p, g, b], [pe, ge]) = fitted(d);
         let _ = writeln!(
             s,
             "| {:.1} | {:.1} | {} | {:.2} | {:.2} | {:+.1} % | {:+.1} … {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
@@ -167,22 +178,18 @@ fn drop_table(drops: &[DropPoint]) -> String {
     s
 }
 
-/// The surface-stress drop's table: R/l0, spacing, the drop's and all particles, period,
-/// Lamb's in the host, error, decay rate, Q2 offset, the z-extent's fit, wall time.
-fn css_drop_table(drops: &[DropPoint]) -> String {
-    let mut s = String::from(
-        "\n## The same drop under the continuum surface stress, in a host of equal density (docs/model.md §4a)\n\n\
+/// A continuum model's drop table: R/l0, spacing, the drop's and all particles, period, Lamb's
+/// in the host, error, decay rate, Q2 offset, the z-extent's fit, wall time.
+fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
+    let mut s = format!(
+        "\n## The same drop under the continuum {}, in a host of equal density (docs/model.md {})\n\n\
          | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | Lamb in the host [ms] | error | decay rate [1/s] | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|---|\n",
+        h.name(),
+        h.section
     );
     for d in drops {
-        let (p, g, b) = d.fit.as_ref().map_or((f64::NAN, f64::NAN, f64::NAN), |f| {
-            (f.period_s, f.damping_rate_per_s, f.offset)
-        });
-        let (pe, ge) = d
-            .extent_fit
-            .as_ref()
-            .map_or((f64::NAN, f64::NAN), |f| (f.period_s, f.damping_rate_per_s));
+        let ([p, g, b], [pe, ge]) = fitted(d);
         let t = d.reference_period_s;
         let _ = writeln!(
             s,

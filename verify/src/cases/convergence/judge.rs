@@ -20,11 +20,8 @@ fn angle_target_deg(theta_deg: f64) -> f64 {
     }
 }
 
-/// The label prefix of the surface-stress drop's metrics.
-pub const CSS: &str = "surface-stress drop";
-
 /// The period's and the damping's relative errors per resolution `(l0/R, error)`; `prefix`
-/// names the drop (`drop`, or [`CSS`]).
+/// names the drop (`drop`, or a continuum model's label).
 pub fn drop_series(drops: &[DropPoint], prefix: &str) -> [Series; 2] {
     let rel = |v: f64, r: f64| (v - r) / r;
     let (period, damping) = drops
@@ -77,51 +74,29 @@ pub fn cap_series(caps: &[CapPoint]) -> Vec<Series> {
 pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
     let mut out: Vec<Metric> = m.drops.iter().flat_map(|d| drop_metrics(case, d)).collect();
     out.extend(m.caps.iter().flat_map(|c| cap_metrics(case, c)));
-    out.extend(m.css_drops.iter().flat_map(|d| css_drop_metrics(case, d)));
+    for (_, drops) in &m.host_drops {
+        out.extend(drops.iter().flat_map(|d| drop_metrics(case, d)));
+    }
     let series = drop_series(&m.drops, "drop")
         .into_iter()
         .chain(cap_series(&m.caps))
-        .chain(css_period_series(&m.css_drops));
+        .chain(host_period_series(m));
     for s in series {
         out.extend(order_metrics(case, &s));
     }
     out
 }
 
-/// The surface-stress drop's period errors (its damping has no reference), if it ran.
-pub fn css_period_series(drops: &[DropPoint]) -> Option<Series> {
-    let [period, _] = drop_series(drops, CSS);
-    (!drops.is_empty()).then_some(period)
-}
-
-/// The surface-stress drop's period against Lamb's in a host of equal density, and its decay
-/// rate, reported (no reference: Lamb's decay is a free drop's).
-fn css_drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
-    let r = d.r_over_l0;
-    let status = d.run.status_note();
-    let (period, gamma, fit_note) = fit_values(d);
-    let t_ms = d.reference_period_s * 1e3;
-    vec![
-        Metric::new(case, format!("{CSS} period R/l0={r:.0}"), "ms", period * 1e3)
-            .against(
-                t_ms,
-                Tolerance::relative(
-                    PERIOD_TARGET,
-                    t_ms,
-                    "3 %: the liquid model's target for a small-amplitude period",
-                ),
-            )
-            .run(d.run)
-            .note(format!(
-                "{status}{fit_note}; Lamb's period of a drop in a host of equal density, for the drop's volume; error {:+.1} %",
-                100.0 * (period * 1e3 / t_ms - 1.0)
-            )),
-        Metric::new(case, format!("{CSS} damping R/l0={r:.0}"), "1/s", gamma)
-            .run(d.run)
-            .note(format!(
-                "{status}reported, not judged: Lamb's decay is a free drop's; in a host as viscous as the drop the interface's boundary layer adds its own"
-            )),
-    ]
+/// The period errors of each continuum model's drops that ran (their damping has no
+/// reference).
+pub fn host_period_series(m: &Measured) -> Vec<Series> {
+    m.host_drops
+        .iter()
+        .map(|(h, drops)| {
+            let [period, _] = drop_series(drops, h.label);
+            period
+        })
+        .collect()
 }
 
 /// The fitted period [s] and decay rate [1/s] of a drop, and the fit's note.
@@ -139,27 +114,48 @@ fn fit_values(d: &DropPoint) -> (f64, f64, String) {
     }
 }
 
+/// A drop's period against its reference (Rayleigh's for the potential's free drop, Lamb's in
+/// a host of equal density for a continuum model's), and its decay rate: judged against Lamb's
+/// with ν + ν_AV for the free drop, reported in a host (Lamb's decay is a free drop's).
 fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
     let r = d.r_over_l0;
     let status = d.run.status_note();
-    let (period, gamma, offset_note) = fit_values(d);
+    let (period, gamma, fit_note) = fit_values(d);
     let t_ms = d.reference_period_s * 1e3;
-    vec![
-        Metric::new(case, format!("drop period R/l0={r:.0}"), "ms", period * 1e3)
-            .against(
-                t_ms,
-                Tolerance::relative(
-                    PERIOD_TARGET,
-                    t_ms,
-                    "3 %: the liquid model's target for a small-amplitude period",
-                ),
-            )
-            .run(d.run)
-            .note(format!(
-                "{status}{offset_note}; Rayleigh's period for the drop's volume; error {:+.1} %",
-                100.0 * (period * 1e3 / t_ms - 1.0)
-            )),
-        Metric::new(case, format!("drop damping R/l0={r:.0}"), "1/s", gamma)
+    let (prefix, reference) = match &d.host_model {
+        Some(h) => (
+            h.label,
+            "Lamb's period of a drop in a host of equal density, for the drop's volume",
+        ),
+        None => ("drop", "Rayleigh's period for the drop's volume"),
+    };
+    let period = Metric::new(
+        case,
+        format!("{prefix} period R/l0={r:.0}"),
+        "ms",
+        period * 1e3,
+    )
+    .against(
+        t_ms,
+        Tolerance::relative(
+            PERIOD_TARGET,
+            t_ms,
+            "3 %: the liquid model's target for a small-amplitude period",
+        ),
+    )
+    .run(d.run)
+    .note(format!(
+        "{status}{fit_note}; {reference}; error {:+.1} %",
+        100.0 * (period * 1e3 / t_ms - 1.0)
+    ));
+    let damping =
+        Metric::new(case, format!("{prefix} damping R/l0={r:.0}"), "1/s", gamma).run(d.run);
+    let damping = if d.host_model.is_some() {
+        damping.note(format!(
+            "{status}reported, not judged: Lamb's decay is a free drop's; in a host as viscous as the drop the interface's boundary layer adds its own"
+        ))
+    } else {
+        damping
             .against(
                 d.lamb_with_av_per_s,
                 Tolerance::relative(
@@ -168,13 +164,13 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
                     "30 %: the liquid model's target for the damping (ν_AV = α1 h c/10 is an estimate)",
                 ),
             )
-            .run(d.run)
             .note(format!(
                 "{status}Lamb's 5ν/R² with ν + ν_AV; ×{:.1} Lamb's with the physical ν alone ({:.2} 1/s)",
                 gamma / d.lamb_physical_per_s,
                 d.lamb_physical_per_s
-            )),
-    ]
+            ))
+    };
+    vec![period, damping]
 }
 
 fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {

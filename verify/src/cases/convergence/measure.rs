@@ -2,7 +2,7 @@
 //! each with its resolution. References use the liquid of the run's own scene, so a `--set`
 //! that changes a property is judged against the right analytic value.
 
-use super::{FIT_FROM_S, Q2, RADIUS_M};
+use super::{HostModel, FIT_FROM_S, HOST_MODELS, Q2, RADIUS_M};
 use crate::analytic::{elastic_drop, lamb, young_laplace};
 use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
@@ -19,6 +19,8 @@ pub struct DropPoint<'r> {
     pub run: &'r RunData,
     /// `R/l0` with the nominal radius [-].
     pub r_over_l0: f64,
+    /// The continuum model of a drop in a host (none: the potential's free drop).
+    pub host_model: Option<HostModel>,
     /// The drop's particles (without the surface-stress drop's host).
     pub drop_particles: usize,
     /// The l = 2 period for the drop's volume (its particles × l0³) [s]: Rayleigh's for the
@@ -66,36 +68,36 @@ pub struct CapPoint<'r> {
 pub struct Measured<'r> {
     /// Free drops (the pairwise potential), coarsest first.
     pub drops: Vec<DropPoint<'r>>,
-    /// Drops under the continuum surface stress, in their host, coarsest first.
-    pub css_drops: Vec<DropPoint<'r>>,
+    /// Drops under each continuum model that ran, in their host, coarsest first.
+    pub host_drops: Vec<(HostModel, Vec<DropPoint<'r>>)>,
     /// Caps, by angle then coarsest first.
     pub caps: Vec<CapPoint<'r>>,
 }
 
-/// Whether `run` is a drop under the continuum surface stress.
-fn surface_stress(run: &RunData) -> bool {
-    run.info
-        .scene
-        .effects
-        .interfacial_tension
-        .is_surface_stress()
+/// The continuum model of `run`'s drop in a host, if it is one.
+fn host_model(run: &RunData) -> Option<HostModel> {
+    HostModel::of(run.info.scene.effects.interfacial_tension)
 }
 
-/// Measures the runs (drops have no wall, caps have one; the surface stress's drops have a
+/// Measures the runs (drops have no wall, caps have one; the continuum models' drops have a
 /// host).
 pub fn measure(runs: &[RunData]) -> Measured<'_> {
-    let drops = |css: bool| -> Vec<DropPoint> {
+    let drops = |model: Option<HostModel>| -> Vec<DropPoint> {
         let mut v: Vec<DropPoint> = runs
             .iter()
-            .filter(|r| r.info.scene.walls.is_empty() && surface_stress(r) == css)
+            .filter(|r| r.info.scene.walls.is_empty() && host_model(r) == model)
             .map(drop_point)
             .collect();
         v.sort_by(|a, b| a.r_over_l0.total_cmp(&b.r_over_l0));
         v
     };
     let mut m = Measured {
-        drops: drops(false),
-        css_drops: drops(true),
+        drops: drops(None),
+        host_drops: HOST_MODELS
+            .into_iter()
+            .map(|h| (h, drops(Some(h))))
+            .filter(|(_, d)| !d.is_empty())
+            .collect(),
         caps: runs
             .iter()
             .filter(|r| !r.info.scene.walls.is_empty())
@@ -127,7 +129,8 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
     let n_drop = drop_particles(run);
     // the drop's volume: its particles' rest volume l0³
     let radius = lamb::sphere_radius_from_volume(n_drop as f64 * l0 * l0 * l0);
-    let css = surface_stress(run);
+    let host_model = host_model(run);
+    let css = host_model.is_some();
     let host = scene.liquids.get(1);
     let sigma = match host.filter(|_| css) {
         Some(h) => scene
@@ -163,6 +166,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
     DropPoint {
         run,
         r_over_l0: RADIUS_M / l0,
+        host_model,
         drop_particles: n_drop,
         reference_period_s,
         elastic_periods_s: elastic_periods_s(scene, reference_period_s, sigma, radius),

@@ -11,12 +11,12 @@
 //!   top over the last quarter of the run) gives the angle of the spherical cap of the drop's
 //!   volume, judged against the typed angle; the side-view fit's angle is reported beside it.
 //!
-//! - **The same drop under the continuum surface stress** (docs/model.md §4a), the second tension
-//!   model, at the same `R/l0`: that model acts between liquids only, so the drop sits in a host
-//!   liquid of its own density and viscosity filling a periodic cube of side 3R, with the
-//!   water's σ as the pair's tension, at `h = 1.3 l0` (the 2D prototypes'). Its period is judged
-//!   against Lamb's for a drop in a host of equal density; Lamb's damping has no counterpart
-//!   there and is reported only.
+//! - **The same drop under each continuum model** (docs/model.md §4a, §4b): the surface stress
+//!   and the surface force, at the same `R/l0`. They act between liquids only, so the drop sits
+//!   in a host liquid of its own density and viscosity filling a periodic cube of side 3R, with
+//!   the water's σ as the pair's tension, at `h = 1.3 l0` (the 2D prototypes'). Its period is
+//!   judged against Lamb's for a drop in a host of equal density; Lamb's damping has no
+//!   counterpart there and is reported only.
 //!
 //! Each metric's error is fitted as `|error| ∝ l0^p` ([`observed_order`]); a metric whose error
 //! does not fall from the coarsest to the finest spacing does not converge, and the case says so.
@@ -70,9 +70,49 @@ const HOST: LiquidProps = LiquidProps {
 /// the host's kinetic energy; the box's share of the period error is measured apart
 /// (docs/findings.md).
 const HOST_BOX_OVER_R: f64 = 3.0;
-/// `h/l0` of the surface-stress drop: the 2D prototypes' (a colour kernel of 1.3 l0 paired them;
-/// the colour kernel here reaches r_e = 4.2 l0).
+/// `h/l0` of the continuum models' drops: the 2D prototypes' (a colour kernel of 1.3 l0 paired
+/// them; the colour kernel here reaches r_e = 4.2 l0).
 const CSS_H_OVER_L0: f64 = 1.3;
+
+/// A continuum model whose drop in a host the case runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostModel {
+    /// The scene's tension model.
+    pub model: TensionModel,
+    /// The prefix of its run ids and figures.
+    pub id: &'static str,
+    /// The prefix of its metrics' labels.
+    pub label: &'static str,
+    /// Its section of docs/model.md.
+    pub section: &'static str,
+}
+
+/// The continuum models, in the order the case reports them.
+pub const HOST_MODELS: [HostModel; 2] = [
+    HostModel {
+        model: TensionModel::SurfaceStress,
+        id: "css",
+        label: "surface-stress drop",
+        section: "§4a",
+    },
+    HostModel {
+        model: TensionModel::SurfaceForce,
+        id: "csf",
+        label: "surface-force drop",
+        section: "§4b",
+    },
+];
+
+impl HostModel {
+    /// The continuum model of a scene's tension model, if it is one.
+    pub fn of(model: TensionModel) -> Option<HostModel> {
+        HOST_MODELS.into_iter().find(|m| m.model == model)
+    }
+    /// Its model's name, e.g. `surface stress`.
+    pub fn name(&self) -> &'static str {
+        self.label.trim_end_matches(" drop")
+    }
+}
 
 /// Name of the probe column of the free drop's axial moment.
 const Q2: &str = "q2";
@@ -81,7 +121,7 @@ const Q2: &str = "q2";
 /// caps' angles [deg].
 struct Design {
     drops: Vec<f64>,
-    /// `R/l0` of the surface-stress drop.
+    /// `R/l0` of each continuum model's drop.
     css_drops: Vec<f64>,
     caps: Vec<f64>,
     angles_deg: Vec<f64>,
@@ -152,9 +192,9 @@ fn drop_id(r_over_l0: f64) -> String {
     format!("drop_r{r_over_l0:.0}")
 }
 
-/// Run id of the surface-stress drop at `R/l0`.
-fn css_drop_id(r_over_l0: f64) -> String {
-    format!("css_drop_r{r_over_l0:.0}")
+/// Run id of the continuum model `m`'s drop at `R/l0`.
+fn css_drop_id(m: &HostModel, r_over_l0: f64) -> String {
+    format!("{}_drop_r{r_over_l0:.0}", m.id)
 }
 
 /// Run id of the cap at `theta_deg` with `n` spacings per radius.
@@ -183,10 +223,10 @@ fn drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
         .build()
 }
 
-/// The drop of [`drop_scene`] under the continuum surface stress, in a host liquid filling a
+/// The drop of [`drop_scene`] under the continuum model `m`, in a host liquid filling a
 /// periodic cube of side [`HOST_BOX_OVER_R`] R (a whole number of spacings), for
 /// [`FIT_FROM_S`] and two of Lamb's periods in the host.
-fn css_drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
+fn css_drop_scene(f: Fidelity, m: &HostModel, r_over_l0: f64) -> solver::Scene {
     let l0 = RADIUS_M / r_over_l0;
     let (a, c) = (
         RADIUS_M / (1.0 + EPSILON).sqrt(),
@@ -207,7 +247,7 @@ fn css_drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
             solver::scene::Setting::Natsui2021.re_over_l0(),
         )
         .paper_effects()
-        .tension_model(TensionModel::SurfaceStress)
+        .tension_model(m.model)
         .liquid(&WATER_20C)
         .liquid(&HOST)
         .interface(WATER_20C.name, HOST.name, WATER_20C.surface_tension_n_m)
@@ -306,10 +346,12 @@ impl Case for Convergence {
                 snapshot_times_s: vec![],
             })
         });
-        let css_drops = d.css_drops.iter().map(|&r| RunSpec {
-            id: css_drop_id(r),
-            scene: css_drop_scene(f, r),
-            snapshot_times_s: vec![],
+        let css_drops = HOST_MODELS.iter().flat_map(|m| {
+            d.css_drops.iter().map(move |&r| RunSpec {
+                id: css_drop_id(m, r),
+                scene: css_drop_scene(f, m, r),
+                snapshot_times_s: vec![],
+            })
         });
         drops.chain(caps).chain(css_drops).collect()
     }
@@ -384,14 +426,18 @@ mod tests {
             let runs = Convergence.runs(f);
             assert_eq!(
                 runs.len(),
-                d.drops.len() + d.caps.len() * d.angles_deg.len() + d.css_drops.len()
+                d.drops.len()
+                    + d.caps.len() * d.angles_deg.len()
+                    + HOST_MODELS.len() * d.css_drops.len()
             );
             for r in &runs {
                 let walls = !r.scene.walls.is_empty();
                 assert_eq!(walls, r.id.starts_with("cap_"), "{}", r.id);
                 assert!(r.scene.effects.gravity.is_none(), "{}: zero gravity", r.id);
-                let css = r.scene.effects.interfacial_tension.is_surface_stress();
-                assert_eq!(css, r.id.starts_with("css_drop_"), "{}", r.id);
+                let model = HostModel::of(r.scene.effects.interfacial_tension);
+                let css = model.is_some();
+                let id = model.map(|m| format!("{}_drop_", m.id));
+                assert_eq!(css, id.is_some_and(|p| r.id.starts_with(&p)), "{}", r.id);
                 // the surface-stress drop and its host fill the periodic box, and the two
                 // liquids' particles are as many as its lattice sites
                 if css {

@@ -42,6 +42,12 @@ fn is_positive_finite(value: f64) -> bool {
     value.is_finite() && value > 0.0
 }
 
+/// `true` for a shape mode (`l ≥ 2`) of a drop with a positive finite tension `σ` [N/m] and
+/// radius `R` [m].
+fn is_shape_mode(l: u32, surface_tension_n_per_m: f64, radius_m: f64) -> bool {
+    l >= 2 && is_positive_finite(surface_tension_n_per_m) && is_positive_finite(radius_m)
+}
+
 /// Angular frequency `ω_l` \[rad/s\] of the shape mode of degree `l` of a free inviscid drop.
 ///
 /// - `l`: spherical-harmonic degree (dimensionless), `l ≥ 2`.
@@ -56,11 +62,7 @@ pub fn lamb_angular_frequency(
     density_kg_m3: f64,
     radius_m: f64,
 ) -> f64 {
-    if l < 2
-        || !is_positive_finite(surface_tension_n_per_m)
-        || !is_positive_finite(density_kg_m3)
-        || !is_positive_finite(radius_m)
-    {
+    if !is_shape_mode(l, surface_tension_n_per_m, radius_m) || !is_positive_finite(density_kg_m3) {
         return f64::NAN;
     }
     let degree = f64::from(l);
@@ -96,9 +98,7 @@ pub fn lamb_angular_frequency_in_host(
     radius_m: f64,
 ) -> f64 {
     let density_ok = |d: f64| d.is_finite() && d >= 0.0;
-    if l < 2
-        || !is_positive_finite(surface_tension_n_per_m)
-        || !is_positive_finite(radius_m)
+    if !is_shape_mode(l, surface_tension_n_per_m, radius_m)
         || !density_ok(drop_density_kg_m3)
         || !density_ok(host_density_kg_m3)
     {

@@ -185,7 +185,7 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
         "\n## The same drop under the continuum {}, in a host of equal density (docs/model.md {})\n\n\
          | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | Lamb in the host [ms] | error | decay rate [1/s] | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|---|\n",
-        h.name(),
+        h.name,
         h.section
     );
     for d in drops {

@@ -83,6 +83,8 @@ pub struct HostModel {
     pub id: &'static str,
     /// The prefix of its metrics' labels.
     pub label: &'static str,
+    /// Its model's name.
+    pub name: &'static str,
     /// Its section of docs/model.md.
     pub section: &'static str,
 }
@@ -93,12 +95,14 @@ pub const HOST_MODELS: [HostModel; 2] = [
         model: TensionModel::SurfaceStress,
         id: "css",
         label: "surface-stress drop",
+        name: "surface stress",
         section: "§4a",
     },
     HostModel {
         model: TensionModel::SurfaceForce,
         id: "csf",
         label: "surface-force drop",
+        name: "surface force",
         section: "§4b",
     },
 ];
@@ -107,10 +111,6 @@ impl HostModel {
     /// The continuum model of a scene's tension model, if it is one.
     pub fn of(model: TensionModel) -> Option<HostModel> {
         HOST_MODELS.into_iter().find(|m| m.model == model)
-    }
-    /// Its model's name, e.g. `surface stress`.
-    pub fn name(&self) -> &'static str {
-        self.label.trim_end_matches(" drop")
     }
 }
 

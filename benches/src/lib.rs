@@ -254,19 +254,19 @@ tension = 0.0728
 [[body]]
 name = "drop"
 liquid = "water"
-shape = {{ kind = "ellipsoid", center = [0.0, 0.0, 0.0], semi_axes = [3.0e-4, 3.0e-4, 3.0e-4] }}
+shape = {{ kind = "ellipsoid", center = [{half:?}, {half:?}, {half:?}], semi_axes = [3.0e-4, 3.0e-4, 3.0e-4] }}
 
 [[body]]
 name = "host"
 liquid = "host"
-shape = {{ kind = "box_around_ellipsoid", min = [{nh:?}, {nh:?}, {nh:?}], max = [{half:?}, {half:?}, {half:?}], center = [0.0, 0.0, 0.0], semi_axes = [3.0e-4, 3.0e-4, 3.0e-4] }}
+shape = {{ kind = "box_around_ellipsoid", min = [0.0, 0.0, 0.0], max = [{edge:?}, {edge:?}, {edge:?}], center = [{half:?}, {half:?}, {half:?}], semi_axes = [3.0e-4, 3.0e-4, 3.0e-4] }}
 
 [periodic]
-x = [{nh:?}, {half:?}]
-y = [{nh:?}, {half:?}]
-z = [{nh:?}, {half:?}]
+x = [0.0, {edge:?}]
+y = [0.0, {edge:?}]
+z = [0.0, {edge:?}]
 "#,
-        nh = -half,
+        edge = EDGE_M,
     )
 }
 

@@ -11,7 +11,7 @@ use cli::commands::{
 use cli::{exit_of, interrupt_flag};
 use solver::kernel::KernelKind;
 use solver::simulation::calibration::SlabDesign;
-use verify::diagnostics::{lattice_moduli, surface_stress};
+use verify::diagnostics::{curvature, lattice_moduli, surface_stress};
 use verify::plan::{self, TaskOptions};
 use verify::study::StudyOptions;
 
@@ -83,6 +83,14 @@ fn main() {
             0
         }
         Command::Measure { run_dir } => exit_of(measure_run(&run_dir)),
+        Command::Curvature {
+            re_over_l0,
+            r_over_l0,
+            jitter,
+        } => {
+            print!("{}", curvature::table(&re_over_l0, &r_over_l0, jitter));
+            0
+        }
         Command::SurfaceStress { lists } => {
             let settings = surface_stress_settings(lists);
             print!("{}", surface_stress::table(&settings));

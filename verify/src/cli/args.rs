@@ -179,6 +179,20 @@ pub(crate) enum Command {
         #[arg(long, value_delimiter = ',', default_value = "1")]
         order: Vec<u8>,
     },
+    /// The surface force's curvature on a lattice sphere (docs/model.md §4b): its mean and
+    /// particle-scale spread in units of 2/R, and the inward force's total, for colour-kernel
+    /// reaches r_e/l0 × sphere radii R/l0.
+    Curvature {
+        /// Colour-kernel supports r_e/l0.
+        #[arg(long = "re", value_delimiter = ',', default_value = "4.2,6.0,8.4")]
+        re_over_l0: Vec<f64>,
+        /// Sphere radii R/l0.
+        #[arg(long = "r", value_delimiter = ',', default_value = "10,14,20")]
+        r_over_l0: Vec<f64>,
+        /// Seeded jitter of the lattice, up to ± this many spacings per axis.
+        #[arg(long, default_value = "0.05")]
+        jitter: f64,
+    },
     /// Measure a finished run like the cases do (height, wetted radius, contact angle, shape
     /// moments per liquid against time, from its `--vtk` snapshots) → RUN_DIR/measures.csv and
     /// plots, with the Young–Laplace equilibrium where one liquid rests on one wall.

@@ -1,6 +1,7 @@
 //! Diagnostics of the discretisation itself, independent of any paper check: how far the
 //! particle system is from a liquid.
 
+pub mod curvature;
 pub mod lattice_moduli;
 pub mod slab_tension;
 pub mod surface_stress;

@@ -185,10 +185,16 @@ impl Lcg {
 /// The benchmark state: the scene of [`scene_toml`] built, its fluid perturbed (seeded), the
 /// lists rebuilt and one time step taken.
 pub fn fixture(n_side: usize, re_over_l0: f64, plate: bool) -> Simulation {
-    let scene = Scene::from_toml_str(&scene_toml(n_side, re_over_l0, plate))
-        .expect("benchmark scene parses");
-    let mut sim = Simulation::new(&scene).expect("benchmark scene builds");
+    let sim = perturbed(&scene_toml(n_side, re_over_l0, plate), n_side);
     assert_eq!(sim.model.kernel, KernelKind::WendlandC2);
+    sim
+}
+
+/// The scene `text` of `n_side³` fluid particles built, its fluid perturbed (seeded by
+/// `n_side`), the lists rebuilt and one time step taken.
+fn perturbed(text: &str, n_side: usize) -> Simulation {
+    let scene = Scene::from_toml_str(text).expect("benchmark scene parses");
+    let mut sim = Simulation::new(&scene).expect("benchmark scene builds");
     assert_eq!(sim.particles.n_fluid, n_side.pow(3));
     let l0 = sim.model.l0_m;
     let mut rng = Lcg::new(SEED ^ ((n_side as u64) << 32));
@@ -273,20 +279,5 @@ z = [0.0, {edge:?}]
 /// The state of [`drop_in_host_toml`], perturbed as [`fixture`]'s (seeded), lists rebuilt, one
 /// time step taken.
 pub fn drop_in_host(n_side: usize, model: &str) -> Simulation {
-    let scene =
-        Scene::from_toml_str(&drop_in_host_toml(n_side, model)).expect("benchmark scene parses");
-    let mut sim = Simulation::new(&scene).expect("benchmark scene builds");
-    assert_eq!(sim.particles.n_fluid, n_side.pow(3));
-    let l0 = sim.model.l0_m;
-    let mut rng = Lcg::new(SEED ^ ((n_side as u64) << 32));
-    let p = &mut sim.particles;
-    for i in 0..p.n_fluid {
-        p.pos[i] += rng.vec(0.05 * l0);
-        p.vel[i] = rng.vec(0.05);
-    }
-    sim.rebuild_neighbours()
-        .expect("benchmark particles stay on the cell grid");
-    sim.step(f64::INFINITY)
-        .expect("one step of the benchmark scene");
-    sim
+    perturbed(&drop_in_host_toml(n_side, model), n_side)
 }

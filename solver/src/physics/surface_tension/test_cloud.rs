@@ -56,6 +56,25 @@ pub fn cloud(pos: Vec<Vec3>, phase_of: impl Fn(Vec3) -> u8, periodic: PeriodicBo
     }
 }
 
+/// A sphere of phase 1, radius 4 l0, in a 12³ lattice cube of phase 0 (open).
+pub fn small_sphere() -> Cloud {
+    let centre = Vec3::repeat(6.0 * L0);
+    cloud(
+        lattice([12, 12, 12]),
+        |x| u8::from((x - centre).norm() < 4.0 * L0),
+        PeriodicBox::OPEN,
+    )
+}
+
+/// `f()` on a pool of `threads` worker threads.
+pub fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
 /// The simple cubic lattice `(i + ½) l0` of an `nx × ny × nz` box [m].
 pub fn lattice(n: [usize; 3]) -> Vec<Vec3> {
     let mut v = Vec::new();

@@ -5,7 +5,7 @@
 use super::*;
 use crate::periodic::PeriodicBox;
 use crate::physics::surface_tension::test_cloud::{
-    cloud, lattice, lattice_moment, Cloud, L0, SIGMA,
+    cloud, lattice, lattice_moment, on_threads, small_sphere, Cloud, L0, SIGMA,
 };
 
 fn evaluate(c: &Cloud) -> ForceScratch {
@@ -88,19 +88,8 @@ fn a_sphere_of_either_phase_is_pulled_inward_by_its_laplace_jump() {
 
 #[test]
 fn the_same_bits_for_any_thread_count() {
-    let centre = Vec3::repeat(6.0 * L0);
-    let c = cloud(
-        lattice([12, 12, 12]),
-        |x| u8::from((x - centre).norm() < 4.0 * L0),
-        PeriodicBox::OPEN,
-    );
-    let run = |threads| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| evaluate(&c))
-    };
+    let c = small_sphere();
+    let run = |threads| on_threads(threads, || evaluate(&c));
     let one = run(1);
     for threads in [2, 3] {
         let other = run(threads);

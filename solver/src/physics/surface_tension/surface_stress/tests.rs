@@ -5,7 +5,7 @@
 use super::*;
 use crate::periodic::PeriodicBox;
 use crate::physics::surface_tension::test_cloud::{
-    cloud, lattice, lattice_moment, Cloud, L0, R_E, SIGMA,
+    cloud, lattice, lattice_moment, on_threads, small_sphere, Cloud, L0, R_E, SIGMA,
 };
 
 fn evaluate(c: &Cloud, sigma: f64) -> StressScratch {
@@ -114,20 +114,8 @@ fn linear_momentum_is_conserved_on_a_disordered_two_phase_cloud() {
 
 #[test]
 fn the_same_bits_for_any_thread_count() {
-    let pos = lattice([12, 12, 12]);
-    let centre = Vec3::repeat(6.0 * L0);
-    let c = cloud(
-        pos,
-        |x| u8::from((x - centre).norm() < 4.0 * L0),
-        PeriodicBox::OPEN,
-    );
-    let run = |threads| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| evaluate(&c, SIGMA))
-    };
+    let c = small_sphere();
+    let run = |threads| on_threads(threads, || evaluate(&c, SIGMA));
     let one = run(1);
     for threads in [2, 3] {
         let other = run(threads);

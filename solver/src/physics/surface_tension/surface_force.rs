@@ -47,6 +47,8 @@ pub struct ForceScratch {
     pub force: Vec<Vec3>,
     /// The interfacial energy estimate `Σ_i V_i σ_ab |∇c_b|` [J] of the last evaluation.
     pub interface_energy_j: f64,
+    /// Its share per fluid particle [J].
+    energy: Vec<f64>,
     spills: Spills,
 }
 
@@ -69,7 +71,8 @@ impl ForceScratch {
         self.curvature.resize(n, 0.0);
         self.force.clear();
         self.force.resize(n, Vec3::zeros());
-        let mut energy = vec![0.0; n];
+        self.energy.clear();
+        self.energy.resize(n, 0.0);
         let band = BAND_GRADIENT_TIMES_R_E / inp.kernel.support_m();
         for a in 0..n_liquids {
             for b in a + 1..n_liquids {
@@ -103,7 +106,7 @@ impl ForceScratch {
                 self.force
                     .par_iter_mut()
                     .zip(self.curvature.par_iter_mut())
-                    .zip(energy.par_iter_mut())
+                    .zip(self.energy.par_iter_mut())
                     .enumerate()
                     .for_each(|(i, ((f, k), e))| {
                         let g = grad[i];
@@ -121,7 +124,7 @@ impl ForceScratch {
             }
         }
         // a fixed-order sum: the same bits for any thread count
-        self.interface_energy_j = energy.iter().sum();
+        self.interface_energy_j = self.energy.iter().sum();
     }
 }
 

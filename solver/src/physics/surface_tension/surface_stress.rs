@@ -157,6 +157,8 @@ pub struct StressScratch {
     /// (each side of an interface sums about half of its area: `G^b` of phase `a`'s particles
     /// rises from 0 to ½|∇c| at the interface, where the other side's takes over).
     pub interface_energy_j: f64,
+    /// Its share per fluid particle [J].
+    energy: Vec<f64>,
     spills: Spills,
 }
 
@@ -175,7 +177,8 @@ impl StressScratch {
         self.stress.clear();
         self.stress.resize(n, [0.0; 6]);
         self.force.resize(n, Vec3::zeros());
-        let mut energy = vec![0.0; n];
+        self.energy.clear();
+        self.energy.resize(n, 0.0);
         for b in 0..n_liquids {
             if (0..n_liquids).all(|a| a == b || sigma(a, b) == 0.0) {
                 continue;
@@ -183,7 +186,7 @@ impl StressScratch {
             inp.colour_gradient(b as u8, &self.spills, &mut self.gradient);
             self.stress
                 .par_iter_mut()
-                .zip(energy.par_iter_mut())
+                .zip(self.energy.par_iter_mut())
                 .enumerate()
                 .for_each(|(i, (t, e))| {
                     let a = inp.phase[i] as usize;
@@ -203,7 +206,7 @@ impl StressScratch {
                 });
         }
         // a fixed-order sum: the same bits for any thread count
-        self.interface_energy_j = energy.iter().sum();
+        self.interface_energy_j = self.energy.iter().sum();
         inp.forces(&self.stress, &self.spills, &mut self.force);
     }
 }

@@ -32,10 +32,8 @@ pub const BAND_GRADIENT_TIMES_R_E: f64 = 0.2;
 /// Scratch of the surface force, kept between steps.
 #[derive(Clone, Debug, Default)]
 pub struct ForceScratch {
-    /// `G^a`, then `∇c_b` per fluid particle [1/m].
+    /// `∇c_b` per fluid particle [1/m] (zero off the phases `a` and `b`).
     gradient: Vec<Vec3>,
-    /// `G^b` per fluid particle [1/m].
-    gradient_b: Vec<Vec3>,
     /// The unit normal in the band (zero outside it) per fluid particle.
     normal: Vec<Vec3>,
     /// The curvature's sums `(numerator [1/m], denominator [-], 0)` per fluid particle.
@@ -64,7 +62,6 @@ impl ForceScratch {
     ) {
         let n = inp.n_fluid;
         self.gradient.resize(n, Vec3::zeros());
-        self.gradient_b.resize(n, Vec3::zeros());
         self.normal.resize(n, Vec3::zeros());
         self.sums.resize(n, Vec3::zeros());
         self.curvature.clear();
@@ -81,23 +78,12 @@ impl ForceScratch {
                     continue;
                 }
                 let (a8, b8) = (a as u8, b as u8);
-                inp.colour_gradient(a8, &self.spills, &mut self.gradient);
-                inp.colour_gradient(b8, &self.spills, &mut self.gradient_b);
-                // ∇c_b on a's and b's particles, the normal in the band
-                let phase = inp.phase;
-                self.gradient
+                interface_gradient(inp, a8, b8, &self.spills, &mut self.gradient);
+                // the normal in the band
+                self.normal
                     .par_iter_mut()
-                    .zip(self.normal.par_iter_mut())
-                    .zip(self.gradient_b.par_iter())
-                    .enumerate()
-                    .for_each(|(i, ((g, nrm), &gb))| {
-                        *g = if phase[i] == a8 {
-                            gb
-                        } else if phase[i] == b8 {
-                            -*g
-                        } else {
-                            Vec3::zeros()
-                        };
+                    .zip(self.gradient.par_iter())
+                    .for_each(|(nrm, g)| {
                         let m = g.norm();
                         *nrm = if m > band { *g / m } else { Vec3::zeros() };
                     });
@@ -126,6 +112,42 @@ impl ForceScratch {
         // a fixed-order sum: the same bits for any thread count
         self.interface_energy_j = self.energy.iter().sum();
     }
+}
+
+/// The colour gradient `∇c_b` [1/m] of the pair of phases `a ≠ b` at their particles, into
+/// `out` (zero elsewhere), in one pass over the pairs across the interface: `G_i^b` on `a`'s
+/// particles and `−G_i^a` on `b`'s ([`StressInput::colour_gradient`]'s sums, here both at
+/// once). A pair `i, j` across adds `s V_j ∇_i W_c` to `i` and `s V_i ∇_i W_c` to `j`, with
+/// `s = +1` if `i` is of `a` and `−1` if it is of `b`.
+fn interface_gradient<K: Kernel>(
+    inp: &StressInput<K>,
+    a: u8,
+    b: u8,
+    spills: &Spills,
+    out: &mut [Vec3],
+) {
+    out.fill(Vec3::zeros());
+    let phase = inp.phase;
+    each_pair_once(out, spills, |i, reactions: &mut Reactions| {
+        let mut g = Vec3::zeros();
+        let other = if phase[i] == a {
+            b
+        } else if phase[i] == b {
+            a
+        } else {
+            return g;
+        };
+        let sign = if phase[i] == a { 1.0 } else { -1.0 };
+        inp.each_later_neighbour(
+            i,
+            |j| phase[j] == other,
+            |j, grad_w, _| {
+                g += grad_w * (sign * inp.vol[j]);
+                reactions.subtract(j, grad_w * (-sign * inp.vol[i]));
+            },
+        );
+        g
+    });
 }
 
 /// The curvature's sums `(Σ_j V_j (n_j − n_i)·∇_i W_c, Σ_j V_j ½(r² − (n_i·r)²)|W_c'|/r, 0)`

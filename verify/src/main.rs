@@ -11,7 +11,7 @@ use cli::commands::{
 use cli::{exit_of, interrupt_flag};
 use solver::kernel::KernelKind;
 use solver::simulation::calibration::SlabDesign;
-use verify::diagnostics::{curvature, lattice_moduli, surface_stress};
+use verify::diagnostics::{curvature, lattice_moduli, mode_stiffness, surface_stress};
 use verify::plan::{self, TaskOptions};
 use verify::study::StudyOptions;
 
@@ -89,6 +89,19 @@ fn main() {
             jitter,
         } => {
             print!("{}", curvature::table(&re_over_l0, &r_over_l0, jitter));
+            0
+        }
+        Command::Stiffness {
+            model,
+            re_over_l0,
+            r_over_l0,
+            jitter,
+            eps,
+        } => {
+            print!(
+                "{}",
+                mode_stiffness::table(&model, &re_over_l0, &r_over_l0, jitter, eps)
+            );
             0
         }
         Command::SurfaceStress { lists } => {

@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 use solver::kernel::KernelKind;
 use solver::simulation::calibration::SlabDesign;
 use std::path::{Path, PathBuf};
+use verify::diagnostics::mode_stiffness::Continuum;
 use verify::suite::overrides::SceneOverride;
 use verify::suite::runner::SuiteOptions;
 use verify::suite::Fidelity;
@@ -192,6 +193,30 @@ pub(crate) enum Command {
         /// Seeded jitter of the lattice, up to ± this many spacings per axis.
         #[arg(long, default_value = "0.05")]
         jitter: f64,
+    },
+    /// The continuum models' stiffness against a lattice sphere's l = 2 mode (static: the
+    /// generalised force on Lamb's mode over its exact `3.2πσR²`), per model, colour-kernel
+    /// support and radius.
+    Stiffness {
+        /// Continuum models.
+        #[arg(
+            long,
+            value_delimiter = ',',
+            default_value = "surface_force,surface_stress"
+        )]
+        model: Vec<Continuum>,
+        /// Colour-kernel supports r_e/l0.
+        #[arg(long = "re", value_delimiter = ',', default_value = "4.2")]
+        re_over_l0: Vec<f64>,
+        /// Sphere radii R/l0.
+        #[arg(long = "r", value_delimiter = ',', default_value = "10,14,20")]
+        r_over_l0: Vec<f64>,
+        /// Seeded jitter of the lattice, up to ± this many spacings per axis.
+        #[arg(long, default_value = "0.05")]
+        jitter: f64,
+        /// The mode's amplitude ε (surface at R (1 + ε P₂)).
+        #[arg(long, default_value = "0.02")]
+        eps: f64,
     },
     /// Measure a finished run like the cases do (height, wetted radius, contact angle, shape
     /// moments per liquid against time, from its `--vtk` snapshots) → RUN_DIR/measures.csv and

@@ -2,10 +2,9 @@
 //! particle-scale spread and the inward force's total depend on the drop's resolution `R/l0`
 //! and the colour kernel's reach `r_e/l0`.
 //!
-//! A sphere of radius `R` of one liquid in a cube of another, on the simple cubic lattice
-//! jittered by a seeded uniform displacement of up to `±jitter l0` per axis (a lattice is a
-//! special input), σ = 1 N/m, the Wendland C2 colour kernel with support `r_e`. Over the band's
-//! particles (those with a force):
+//! A sphere of radius `R` of one liquid in a cube of another ([`SphereCloud`]), σ = 1 N/m,
+//! the Wendland C2 colour kernel with support `r_e`. Over the band's particles (those with a
+//! force):
 //! - the curvature's mean and spread, weighted by each particle's share of the force
 //!   `V σ |∇c|`, in units of the sphere's `2/R`;
 //! - the inward force's total over the Laplace jump's `2σ/R` on the area `4πR²`, `8πσR`.
@@ -13,11 +12,8 @@
 //! A curvature that converges has its spread fall as `R/l0` grows; the total's shortfall is
 //! the band's threshold (the part of `∫|∇c|` left out).
 
-use solver::kernel::{Kernel, WendlandC2};
-use solver::neighbours::NeighbourSearch;
-use solver::periodic::PeriodicBox;
+use super::sphere_cloud::SphereCloud;
 use solver::physics::surface_tension::surface_force::ForceScratch;
-use solver::physics::surface_tension::surface_stress::StressInput;
 use solver::state::Vec3;
 
 /// The curvature of one sphere.
@@ -37,53 +33,20 @@ pub struct SphereCurvature {
 /// `re_over_l0` spacings, jittered by up to `±jitter_over_l0` spacings (lattice units:
 /// l0 = 1 m, σ = 1 N/m; the ratios do not depend on them).
 pub fn sphere(r_over_l0: f64, re_over_l0: f64, jitter_over_l0: f64) -> SphereCurvature {
-    // the cube reaches the band's outer edge and a spacing beyond
-    let n = (2.0 * (r_over_l0 + re_over_l0) + 4.0).ceil() as usize;
-    let centre = Vec3::repeat(0.5 * n as f64);
-    let mut seed = 0x5eed_c0de_u64;
-    let mut uniform = move || {
-        seed = seed
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        2.0 * (seed >> 11) as f64 / (1u64 << 53) as f64 - 1.0
-    };
-    let sites =
-        (0..n * n * n).map(|k| Vec3::new((k % n) as f64, (k / n % n) as f64, (k / (n * n)) as f64));
-    let jittered: Vec<Vec3> = sites
-        .map(|x| {
-            x + Vec3::repeat(0.5) + Vec3::new(uniform(), uniform(), uniform()) * jitter_over_l0
-        })
-        .collect();
-    let mut search = NeighbourSearch::new(2.0, re_over_l0, 0.3);
-    search.set_periodic(PeriodicBox::OPEN);
-    let order = search
-        .sort_order(&jittered)
-        .expect("the cloud fits the cell grid");
-    let pos: Vec<Vec3> = order.iter().map(|&i| jittered[i as usize]).collect();
-    search
-        .build(&pos, pos.len())
-        .expect("the cloud fits the cell grid");
-    let phase: Vec<u8> = pos
-        .iter()
-        .map(|x| u8::from((x - centre).norm() < r_over_l0))
-        .collect();
-    let vol = vec![1.0; pos.len()];
-    let input = StressInput {
-        kernel: WendlandC2::new(re_over_l0 / 2.0),
-        pos: &pos,
-        vol: &vol,
-        phase: &phase,
-        n_fluid: pos.len(),
-        lists: &search.lists,
-    };
+    let cloud = SphereCloud::new(r_over_l0, re_over_l0, jitter_over_l0, |_| Vec3::zeros());
     let mut force = ForceScratch::default();
-    force.evaluate(&input, 2, |a, b| if a != b { 1.0 } else { 0.0 });
+    force.evaluate(&cloud.input(), 2, |a, b| if a != b { 1.0 } else { 0.0 });
     let (mut weight, mut m1, mut m2, mut inward) = (0.0, 0.0, 0.0, 0.0);
-    for ((x, f), k) in pos.iter().zip(&force.force).zip(&force.curvature) {
+    for ((x, f), k) in cloud
+        .reference
+        .iter()
+        .zip(&force.force)
+        .zip(&force.curvature)
+    {
         if *k == 0.0 {
             continue;
         }
-        inward -= f.dot(&(x - centre).normalize());
+        inward -= f.dot(&x.normalize());
         // the particle's share V σ |∇c| of the force
         let w = f.norm() / k.abs();
         let scaled = k * r_over_l0 / 2.0;
@@ -93,7 +56,7 @@ pub fn sphere(r_over_l0: f64, re_over_l0: f64, jitter_over_l0: f64) -> SphereCur
     }
     let mean = m1 / weight;
     SphereCurvature {
-        particles: pos.len(),
+        particles: cloud.pos.len(),
         mean,
         spread: (m2 / weight - mean * mean).max(0.0).sqrt(),
         inward: inward / (8.0 * std::f64::consts::PI * r_over_l0),

@@ -3,5 +3,7 @@
 
 pub mod curvature;
 pub mod lattice_moduli;
+pub mod mode_stiffness;
 pub mod slab_tension;
+pub mod sphere_cloud;
 pub mod surface_stress;

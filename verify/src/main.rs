@@ -97,10 +97,11 @@ fn main() {
             r_over_l0,
             jitter,
             eps,
+            band,
         } => {
             print!(
                 "{}",
-                mode_stiffness::table(&model, &re_over_l0, &r_over_l0, jitter, eps)
+                mode_stiffness::table(&model, &re_over_l0, &r_over_l0, jitter, eps, band)
             );
             0
         }

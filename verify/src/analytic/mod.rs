@@ -4,4 +4,5 @@ pub mod elastic_drop;
 pub mod eq23;
 pub mod lamb;
 pub mod neumann;
+pub mod viscous_host;
 pub mod young_laplace;

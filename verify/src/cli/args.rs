@@ -217,6 +217,9 @@ pub(crate) enum Command {
         /// The mode's amplitude ε (surface at R (1 + ε P₂)).
         #[arg(long, default_value = "0.02")]
         eps: f64,
+        /// The surface force's band threshold on |∇c| r_e (default: the solver's).
+        #[arg(long, default_value_t = solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E)]
+        band: f64,
     },
     /// Measure a finished run like the cases do (height, wetted radius, contact angle, shape
     /// moments per liquid against time, from its `--vtk` snapshots) → RUN_DIR/measures.csv and

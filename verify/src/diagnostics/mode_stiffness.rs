@@ -74,7 +74,7 @@ fn exact_generalised_force(r: f64, eps: f64) -> f64 {
 
 /// The generalised force `Σ_i F_i · ∂x_i/∂ε` [N·l0] of the continuum model `model` on the
 /// sphere stretched by `eps`.
-fn generalised_force(model: Continuum, r: f64, re: f64, jitter: f64, eps: f64) -> f64 {
+fn generalised_force(model: Continuum, r: f64, re: f64, jitter: f64, eps: f64, band: f64) -> f64 {
     let (axial, across) = stretches(eps);
     let cloud = SphereCloud::new(r, re, jitter, |x| {
         Vec3::new(
@@ -87,6 +87,7 @@ fn generalised_force(model: Continuum, r: f64, re: f64, jitter: f64, eps: f64) -
     let force = match model {
         Continuum::SurfaceForce => {
             let mut s = ForceScratch::default();
+            s.band_gradient_times_r_e = band;
             s.evaluate(&cloud.input(), 2, sigma);
             s.force
         }
@@ -113,7 +114,8 @@ pub fn exact_stiffness(r_over_l0: f64, eps: f64) -> f64 {
 }
 
 /// The stiffness of `model` against the `l = 2` mode of a sphere of `r_over_l0` spacings
-/// (colour kernel's support `re_over_l0`, jitter `±jitter_over_l0`, amplitude `eps`), over
+/// (colour kernel's support `re_over_l0`, jitter `±jitter_over_l0`, amplitude `eps`; the
+/// surface force's band threshold `band` on `|∇c| r_e`), over
 /// the exact [`exact_stiffness`] [-].
 pub fn stiffness_ratio(
     model: Continuum,
@@ -121,8 +123,9 @@ pub fn stiffness_ratio(
     re_over_l0: f64,
     jitter_over_l0: f64,
     eps: f64,
+    band: f64,
 ) -> f64 {
-    let q = |e| generalised_force(model, r_over_l0, re_over_l0, jitter_over_l0, e);
+    let q = |e| generalised_force(model, r_over_l0, re_over_l0, jitter_over_l0, e, band);
     let k = -(q(eps) - q(-eps)) / (2.0 * eps);
     k / exact_stiffness(r_over_l0, eps)
 }
@@ -134,17 +137,18 @@ pub fn table(
     r_over_l0: &[f64],
     jitter_over_l0: f64,
     eps: f64,
+    band: f64,
 ) -> String {
     let mut out = format!(
         "The continuum models' stiffness against the l = 2 mode of a lattice sphere (jitter ±{jitter_over_l0} l0 per axis, \
-         stretched by ε = ±{eps} into spheroids):\n\n\
+         stretched by ε = ±{eps} into spheroids; the surface force's band: |∇c| r_e > {band}):\n\n\
          | model | r_e/l0 | R/l0 | k / k_exact | period error at the exact inertia |\n\
          |---|---|---|---|---|\n"
     );
     for &model in models {
         for &re in re_over_l0 {
             for &r in r_over_l0 {
-                let k = stiffness_ratio(model, r, re, jitter_over_l0, eps);
+                let k = stiffness_ratio(model, r, re, jitter_over_l0, eps, band);
                 out.push_str(&format!(
                     "| {} | {re} | {r} | {k:.4} | {:+.2} % |\n",
                     model.name(),
@@ -163,6 +167,7 @@ pub fn table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E;
     use std::f64::consts::PI;
 
     #[test]
@@ -188,7 +193,7 @@ mod tests {
         // R = 6 l0, inside the colour kernel's reach of the whole sphere: the stiffness is
         // positive and of the right order (0.5 and 2 are far from any value the table shows)
         for model in [Continuum::SurfaceForce, Continuum::SurfaceStress] {
-            let k = stiffness_ratio(model, 6.0, 4.2, 0.0, 0.02);
+            let k = stiffness_ratio(model, 6.0, 4.2, 0.0, 0.02, BAND_GRADIENT_TIMES_R_E);
             assert!(k > 0.5 && k < 2.0, "{model:?}: {k}");
         }
     }

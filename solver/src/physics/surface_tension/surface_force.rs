@@ -30,8 +30,11 @@ use rayon::prelude::*;
 pub const BAND_GRADIENT_TIMES_R_E: f64 = 0.2;
 
 /// Scratch of the surface force, kept between steps.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct ForceScratch {
+    /// The band's threshold on `|∇c| r_e` [-] ([`BAND_GRADIENT_TIMES_R_E`] by default; the
+    /// diagnostics vary it).
+    pub band_gradient_times_r_e: f64,
     /// `∇c_b` per fluid particle [1/m] (zero off the phases `a` and `b`).
     gradient: Vec<Vec3>,
     /// The unit normal in the band (zero outside it) per fluid particle.
@@ -48,6 +51,22 @@ pub struct ForceScratch {
     /// Its share per fluid particle [J].
     energy: Vec<f64>,
     spills: Spills,
+}
+
+impl Default for ForceScratch {
+    fn default() -> Self {
+        ForceScratch {
+            band_gradient_times_r_e: BAND_GRADIENT_TIMES_R_E,
+            gradient: Vec::new(),
+            normal: Vec::new(),
+            sums: Vec::new(),
+            curvature: Vec::new(),
+            force: Vec::new(),
+            interface_energy_j: 0.0,
+            energy: Vec::new(),
+            spills: Spills::default(),
+        }
+    }
 }
 
 impl ForceScratch {
@@ -70,7 +89,7 @@ impl ForceScratch {
         self.force.resize(n, Vec3::zeros());
         self.energy.clear();
         self.energy.resize(n, 0.0);
-        let band = BAND_GRADIENT_TIMES_R_E / inp.kernel.support_m();
+        let band = self.band_gradient_times_r_e / inp.kernel.support_m();
         for a in 0..n_liquids {
             for b in a + 1..n_liquids {
                 let s = sigma(a, b);

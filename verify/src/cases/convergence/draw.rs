@@ -1,7 +1,7 @@
 //! The convergence case's figures and table: |error| against l0 (log–log, with slopes 1 and 2),
 //! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution).
 
-use super::judge::{cap_series, drop_series, host_period_series};
+use super::judge::{cap_series, drop_series, host_series};
 use super::measure::{DropPoint, Measured};
 use super::{HostModel, Series as ErrorSeries};
 use crate::report::plot::{self, Plot, Series, SeriesKind};
@@ -12,7 +12,7 @@ use std::path::Path;
 pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
     let mut all: Vec<ErrorSeries> = drop_series(&m.drops, "drop").into();
     all.extend(cap_series(&m.caps));
-    all.extend(host_period_series(m));
+    all.extend(host_series(m));
     error_against_spacing(&all, dir)?;
     drop_histories(
         &m.drops,
@@ -166,8 +166,8 @@ fn drop_table(drops: &[DropPoint]) -> String {
             100.0 * (d.elastic_periods_s[0] / d.reference_period_s - 1.0),
             100.0 * (d.elastic_periods_s[1] / d.reference_period_s - 1.0),
             g,
-            g / d.lamb_physical_per_s,
-            g / d.lamb_with_av_per_s,
+            g / d.decay_physical_per_s,
+            g / d.decay_with_av_per_s,
             b,
             pe * 1e3,
             100.0 * (pe / d.reference_period_s - 1.0),
@@ -178,22 +178,25 @@ fn drop_table(drops: &[DropPoint]) -> String {
     s
 }
 
-/// A continuum model's drop table: R/l0, spacing, the drop's and all particles, period, Lamb's
-/// in the host, error, decay rate, Q2 offset, the z-extent's fit, wall time.
+/// A continuum model's drop table: R/l0, spacing, the drop's and all particles, period, the
+/// viscous reference and Lamb's inviscid in the host with the errors against each, decay rate
+/// against the reference's with ν and with ν + ν_AV, Q2 offset, the z-extent's fit, wall time.
 fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
     let mut s = format!(
         "\n## The same drop under the continuum {}, in a host of equal density (docs/model.md {})\n\n\
-         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | Lamb in the host [ms] | error | decay rate [1/s] | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|\n",
+         The reference is Lamb's period in the host slowed by the interface's boundary layer at the liquids' \
+         physical viscosities (Miller & Scriven 1968); Lamb's inviscid period is beside it.\n\n\
+         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | reference [ms] | error | Lamb inviscid [ms], error | decay rate [1/s] | / reference(ν) | / reference(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
         h.name,
         h.section
     );
     for d in drops {
         let ([p, g, b], [pe, ge]) = fitted(d);
-        let t = d.reference_period_s;
+        let (t, t0) = (d.reference_period_s, d.inviscid_period_s);
         let _ = writeln!(
             s,
-            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.2}, {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
             d.r_over_l0,
             d.run.info.scene.discretisation.l0 * 1e6,
             d.drop_particles,
@@ -201,7 +204,11 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
             p * 1e3,
             t * 1e3,
             100.0 * (p / t - 1.0),
+            t0 * 1e3,
+            100.0 * (p / t0 - 1.0),
             g,
+            g / d.decay_physical_per_s,
+            g / d.decay_with_av_per_s,
             b,
             pe * 1e3,
             100.0 * (pe / t - 1.0),

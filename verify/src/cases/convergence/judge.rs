@@ -34,7 +34,7 @@ pub fn drop_series(drops: &[DropPoint], prefix: &str) -> [Series; 2] {
             let h = 1.0 / d.r_over_l0;
             (
                 (h, rel(p, d.reference_period_s)),
-                (h, rel(g, d.lamb_with_av_per_s)),
+                (h, rel(g, d.decay_with_av_per_s)),
             )
         })
         .unzip();
@@ -80,22 +80,18 @@ pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
     let series = drop_series(&m.drops, "drop")
         .into_iter()
         .chain(cap_series(&m.caps))
-        .chain(host_period_series(m));
+        .chain(host_series(m));
     for s in series {
         out.extend(order_metrics(case, &s));
     }
     out
 }
 
-/// The period errors of each continuum model's drops that ran (their damping has no
-/// reference).
-pub fn host_period_series(m: &Measured) -> Vec<Series> {
+/// The period and damping errors of each continuum model's drops that ran.
+pub fn host_series(m: &Measured) -> Vec<Series> {
     m.host_drops
         .iter()
-        .map(|(h, drops)| {
-            let [period, _] = drop_series(drops, h.label);
-            period
-        })
+        .flat_map(|(h, drops)| drop_series(drops, h.label))
         .collect()
 }
 
@@ -114,20 +110,31 @@ fn fit_values(d: &DropPoint) -> (f64, f64, String) {
     }
 }
 
-/// A drop's period against its reference (Rayleigh's for the potential's free drop, Lamb's in
-/// a host of equal density for a continuum model's), and its decay rate: judged against Lamb's
-/// with ν + ν_AV for the free drop, reported in a host (Lamb's decay is a free drop's).
+/// A drop's period against its reference (Rayleigh's for the potential's free drop; for a
+/// continuum model's, Lamb's in a host of equal density slowed by the interface's boundary
+/// layer), and its decay rate against the reference's with ν + ν_AV.
 fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
     let r = d.r_over_l0;
     let status = d.run.status_note();
     let (period, gamma, fit_note) = fit_values(d);
     let t_ms = d.reference_period_s * 1e3;
-    let (prefix, reference) = match &d.host_model {
+    let inviscid_error = 100.0 * (period / d.inviscid_period_s - 1.0);
+    let (prefix, reference, decay) = match &d.host_model {
         Some(h) => (
             h.label,
-            "Lamb's period of a drop in a host of equal density, for the drop's volume",
+            format!(
+                "Lamb's period of a drop in a host of equal density, for the drop's volume, slowed by the \
+                 interface's boundary layer at the physical viscosities (Miller & Scriven 1968); against \
+                 Lamb's inviscid {:.2} ms the error is {inviscid_error:+.1} %",
+                d.inviscid_period_s * 1e3
+            ),
+            "the boundary layer's and the bulk's decay (Miller & Scriven 1968)",
         ),
-        None => ("drop", "Rayleigh's period for the drop's volume"),
+        None => (
+            "drop",
+            "Rayleigh's period for the drop's volume".to_string(),
+            "Lamb's 5ν/R²",
+        ),
     };
     let period = Metric::new(
         case,
@@ -148,28 +155,21 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
         "{status}{fit_note}; {reference}; error {:+.1} %",
         100.0 * (period * 1e3 / t_ms - 1.0)
     ));
-    let damping =
-        Metric::new(case, format!("{prefix} damping R/l0={r:.0}"), "1/s", gamma).run(d.run);
-    let damping = if d.host_model.is_some() {
-        damping.note(format!(
-            "{status}reported, not judged: Lamb's decay is a free drop's; in a host as viscous as the drop the interface's boundary layer adds its own"
-        ))
-    } else {
-        damping
-            .against(
-                d.lamb_with_av_per_s,
-                Tolerance::relative(
-                    DAMPING_TARGET,
-                    d.lamb_with_av_per_s,
-                    "30 %: the liquid model's target for the damping (ν_AV = α1 h c/10 is an estimate)",
-                ),
-            )
-            .note(format!(
-                "{status}Lamb's 5ν/R² with ν + ν_AV; ×{:.1} Lamb's with the physical ν alone ({:.2} 1/s)",
-                gamma / d.lamb_physical_per_s,
-                d.lamb_physical_per_s
-            ))
-    };
+    let damping = Metric::new(case, format!("{prefix} damping R/l0={r:.0}"), "1/s", gamma)
+        .run(d.run)
+        .against(
+            d.decay_with_av_per_s,
+            Tolerance::relative(
+                DAMPING_TARGET,
+                d.decay_with_av_per_s,
+                "30 %: the liquid model's target for the damping (ν_AV = α1 h c/10 is an estimate)",
+            ),
+        )
+        .note(format!(
+            "{status}{decay} with ν + ν_AV; ×{:.1} the same with the physical ν alone ({:.2} 1/s)",
+            gamma / d.decay_physical_per_s,
+            d.decay_physical_per_s
+        ));
     vec![period, damping]
 }
 

@@ -3,6 +3,7 @@
 //! that changes a property is judged against the right analytic value.
 
 use super::{HostModel, FIT_FROM_S, HOST_MODELS, Q2, RADIUS_M};
+use crate::analytic::viscous_host::{self, Liquid};
 use crate::analytic::{elastic_drop, lamb, young_laplace};
 use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
@@ -24,16 +25,20 @@ pub struct DropPoint<'r> {
     /// The drop's particles (without the surface-stress drop's host).
     pub drop_particles: usize,
     /// The l = 2 period for the drop's volume (its particles × l0³) [s]: Rayleigh's for the
-    /// free drop, Lamb's in a host for the surface-stress drop.
+    /// free drop; in a host, Lamb's slowed by the interface's boundary layer at the liquids'
+    /// physical viscosities (Miller & Scriven 1968, [`viscous_host`]).
     pub reference_period_s: f64,
+    /// The inviscid period [s]: Rayleigh's, or Lamb's in the host.
+    pub inviscid_period_s: f64,
     /// Rayleigh's period shortened by the reference lattice's shear moduli at the run's setting
     /// (Rayleigh–Ritz, [`elastic_drop`]): with `C′`, which a stretch along the lattice's axis
     /// loads (this drop's), and with `C44` (a body diagonal) [s]; NaN without the potential.
     pub elastic_periods_s: [f64; 2],
-    /// Lamb's l = 2 decay rate with the physical ν alone [1/s] (NaN in a host: no reference).
-    pub lamb_physical_per_s: f64,
-    /// Lamb's l = 2 decay rate with ν + ν_AV (α1 h c/10) [1/s] (NaN in a host).
-    pub lamb_with_av_per_s: f64,
+    /// The l = 2 decay rate with the physical viscosities alone [1/s]: Lamb's for the free
+    /// drop; in a host, the boundary layer's and the bulk's (Miller & Scriven 1968).
+    pub decay_physical_per_s: f64,
+    /// The same with ν + ν_AV (α1 h c/10) in each liquid [1/s].
+    pub decay_with_av_per_s: f64,
     /// Times [s] and Q2 [-] of the series fitted (from [`FIT_FROM_S`]).
     pub series: (Vec<f64>, Vec<f64>),
     /// The damped cosine fitted to Q2 from [`FIT_FROM_S`], or why it failed.
@@ -138,17 +143,43 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
             .unwrap_or(f64::NAN),
         None => liquid.surface_tension.unwrap_or(f64::NAN),
     };
-    let reference_period_s = match host.filter(|_| css) {
-        Some(h) => lamb::lamb_period_in_host(2, sigma, liquid.density, h.density, radius),
-        None => lamb::lamb_period(2, sigma, liquid.density, radius),
+    let nu_av = artificial_viscosity_m2_s(scene);
+    // in a host: Lamb's mode with the boundary layer and bulk of both liquids, at the
+    // physical viscosities and with ν_AV added to each
+    let host_mode = |av: f64| {
+        host.filter(|_| css).map(|h| {
+            let liquid_of = |density: f64, viscosity: f64| Liquid {
+                density_kg_m3: density,
+                viscosity_pa_s: viscosity + density * av,
+            };
+            viscous_host::mode_in_host(
+                2,
+                sigma,
+                liquid_of(liquid.density, liquid.viscosity),
+                liquid_of(h.density, h.viscosity),
+                radius,
+            )
+        })
     };
-    // Lamb's decay is a free drop's: in a viscous host the interface's boundary layer adds
-    // its own, with no closed form here
-    let nu = if css {
-        f64::NAN
-    } else {
-        liquid.viscosity / liquid.density
-    };
+    let nu = liquid.viscosity / liquid.density;
+    let (reference_period_s, inviscid_period_s, decay_physical_per_s, decay_with_av_per_s) =
+        match (host_mode(0.0), host_mode(nu_av)) {
+            (Some(m), Some(m_av)) => (
+                m.period_s(),
+                m.inviscid_period_s(),
+                m.damping_rate_per_s(),
+                m_av.damping_rate_per_s(),
+            ),
+            _ => {
+                let t = lamb::lamb_period(2, sigma, liquid.density, radius);
+                (
+                    t,
+                    t,
+                    lamb::lamb_damping_rate(2, nu, radius),
+                    lamb::lamb_damping_rate(2, nu + nu_av, radius),
+                )
+            }
+        };
     let t = run
         .probes
         .column(&RunColumn::Time.name())
@@ -169,14 +200,10 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         host_model,
         drop_particles: n_drop,
         reference_period_s,
+        inviscid_period_s,
         elastic_periods_s: elastic_periods_s(scene, reference_period_s, sigma, radius),
-        lamb_physical_per_s: lamb::lamb_damping_rate(2, nu, radius),
-        // the artificial viscosity's effective ν ≈ α1 h c/10 (Monaghan 1992)
-        lamb_with_av_per_s: lamb::lamb_damping_rate(
-            2,
-            nu + artificial_viscosity_m2_s(scene),
-            radius,
-        ),
+        decay_physical_per_s,
+        decay_with_av_per_s,
         fit: fit_damped_cosine(&series.0, &series.1),
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,

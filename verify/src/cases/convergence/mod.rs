@@ -15,8 +15,13 @@
 //!   and the surface force, at the same `R/l0`. They act between liquids only, so the drop sits
 //!   in a host liquid of its own density and viscosity filling a periodic cube of side 3R, with
 //!   the water's σ as the pair's tension, at `h = 1.3 l0` (the 2D prototypes'). Its period is
-//!   judged against Lamb's for a drop in a host of equal density; Lamb's damping has no
-//!   counterpart there and is reported only.
+//!   judged against Lamb's for a drop in a host of equal density slowed by the interface's
+//!   boundary layer at the liquids' physical viscosities, its decay rate against the layer's
+//!   and the bulk's with ν + ν_AV (Miller & Scriven 1968,
+//!   [`crate::analytic::viscous_host`]); Lamb's inviscid period is reported beside it. In a
+//!   host as viscous as the drop the layer lengthens the period by 3.8 %, at every
+//!   resolution: against the inviscid period that bias would read as an error that does not
+//!   fall.
 //!
 //! Each metric's error is fitted as `|error| ∝ l0^p` ([`observed_order`]); a metric whose error
 //! does not fall from the coarsest to the finest spacing does not converge, and the case says so.
@@ -306,7 +311,7 @@ impl Case for Convergence {
         "Convergence: the l = 2 drop and zero-gravity caps at three resolutions, with the observed order of each error"
     }
     fn source(&self) -> &'static str {
-        "Rayleigh (1879); Lamb (1932) §275, §355; the spherical cap of the drop's volume — a diagnostic of the model, not a paper check"
+        "Rayleigh (1879); Lamb (1932) §275, §355; Miller & Scriven (1968) for the drop in a host; the spherical cap of the drop's volume — a diagnostic of the model, not a paper check"
     }
     fn effects(&self) -> Option<DeclaredEffects> {
         // the drops have no wall, the caps do

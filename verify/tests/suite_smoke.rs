@@ -170,9 +170,10 @@ fn convergence_smoke() {
     let (m, out) = run("convergence");
     // every run is measured (a failed fit or cap gives NaN) and each metric's order is
     // computed; whether the errors fall at these coarse spacings is the measurement, kept by
-    // the snapshot. Except the surface force's drops: at R/l0 = 6 its drop gains energy in its
-    // second period and elongates past its start (energy balance +3.8 nJ on a mode of about
-    // 12 nJ; docs/findings.md), so no damped cosine fits it: that NaN is the measurement
+    // the snapshot. Except the surface force's drops: at R/l0 = 5 and 6 (R = 1.2 and 1.4 r_e)
+    // they gain energy (kinetic energy up to 9 and 15 nJ, on a mode of about 10 nJ, with
+    // the band at 0.01 r_e⁻¹; docs/findings.md) and drift instead of ringing down, so no damped
+    // cosine fits them: those NaNs are the measurement
     let measured =
         |x: &&Metric| !x.name.contains("side view") && !x.name.starts_with("surface-force drop");
     for x in m.iter().filter(measured) {

@@ -185,9 +185,11 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
     let mut s = format!(
         "\n## The same drop under the continuum {}, in a host of equal density (docs/model.md {})\n\n\
          The reference is Lamb's period in the host slowed by the interface's boundary layer at the liquids' \
-         physical viscosities (Miller & Scriven 1968); Lamb's inviscid period is beside it.\n\n\
-         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | reference [ms] | error | Lamb inviscid [ms], error | decay rate [1/s] | / reference(ν) | / reference(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+         physical viscosities (Miller & Scriven 1968); Lamb's inviscid period is beside it. The static \
+         stiffness is the model's against the l = 2 mode of a lattice sphere of the same R/l0 (`verify stiffness`): the \
+         force's share of the error, apart from the run's inertia (host, box, compressibility).\n\n\
+         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | reference [ms] | error | Lamb inviscid [ms], error | static stiffness k/k_exact (its error) | decay rate [1/s] | / reference(ν) | / reference(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
         h.name,
         h.section
     );
@@ -196,7 +198,7 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
         let (t, t0) = (d.reference_period_s, d.inviscid_period_s);
         let _ = writeln!(
             s,
-            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.2}, {:+.1} % | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.2}, {:+.1} % | {:.3} ({:+.1} %) | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
             d.r_over_l0,
             d.run.info.scene.discretisation.l0 * 1e6,
             d.drop_particles,
@@ -206,6 +208,8 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
             100.0 * (p / t - 1.0),
             t0 * 1e3,
             100.0 * (p / t0 - 1.0),
+            d.static_stiffness,
+            100.0 * (d.static_stiffness.powf(-0.5) - 1.0),
             g,
             g / d.decay_physical_per_s,
             g / d.decay_with_av_per_s,

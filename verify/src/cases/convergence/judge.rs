@@ -170,7 +170,23 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
             gamma / d.decay_physical_per_s,
             d.decay_physical_per_s
         ));
-    vec![period, damping]
+    let mut out = vec![period, damping];
+    if d.host_model.is_some() {
+        out.push(
+            Metric::new(
+                case,
+                format!("{prefix} static stiffness R/l0={r:.0}"),
+                "-",
+                d.static_stiffness,
+            )
+            .note(format!(
+                "reported, not judged: k/k_exact of the model against the l = 2 mode of a lattice sphere of this R/l0 \
+                 (`verify stiffness`, jitter ±0.05 l0, ε = ±0.02); alone it would make the period {:+.1} % long",
+                100.0 * (d.static_stiffness.powf(-0.5) - 1.0)
+            )),
+        );
+    }
+    out
 }
 
 fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {

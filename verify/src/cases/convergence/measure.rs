@@ -8,6 +8,10 @@ use crate::analytic::{elastic_drop, lamb, young_laplace};
 use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
+use crate::diagnostics::mode_stiffness::{self, Continuum};
+use solver::kernel::KernelKind;
+use solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E;
+use solver::scene::TensionModel;
 use crate::measure::geometry;
 use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
 use crate::measure::surface;
@@ -30,6 +34,12 @@ pub struct DropPoint<'r> {
     pub reference_period_s: f64,
     /// The inviscid period [s]: Rayleigh's, or Lamb's in the host.
     pub inviscid_period_s: f64,
+    /// A continuum model's static stiffness against the l = 2 mode of a lattice sphere of the
+    /// same `R/l0` and `r_e/l0`, over Lamb's ([`mode_stiffness`]; jitter ±0.05 l0, ε = ±0.02):
+    /// the force's share of the period error, `k^(−1/2) − 1`, apart from the run's inertia
+    /// [-]. NaN for the potential's drop, and for a kernel other than the diagnostic's
+    /// Wendland C2.
+    pub static_stiffness: f64,
     /// Rayleigh's period shortened by the reference lattice's shear moduli at the run's setting
     /// (Rayleigh–Ritz, [`elastic_drop`]): with `C′`, which a stretch along the lattice's axis
     /// loads (this drop's), and with `C44` (a body diagonal) [s]; NaN without the potential.
@@ -201,6 +211,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         drop_particles: n_drop,
         reference_period_s,
         inviscid_period_s,
+        static_stiffness: static_stiffness(scene, host_model, RADIUS_M / l0),
         elastic_periods_s: elastic_periods_s(scene, reference_period_s, sigma, radius),
         decay_physical_per_s,
         decay_with_av_per_s,
@@ -208,6 +219,30 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
     }
+}
+
+/// [`DropPoint::static_stiffness`].
+fn static_stiffness(scene: &solver::Scene, host: Option<HostModel>, r_over_l0: f64) -> f64 {
+    // the diagnostic's lattice: jittered by ±0.05 l0, stretched by ε = ±0.02 (its defaults)
+    const JITTER_OVER_L0: f64 = 0.05;
+    const EPS: f64 = 0.02;
+    let d = &scene.discretisation;
+    let model = match host.map(|h| h.model) {
+        Some(TensionModel::SurfaceForce) => Continuum::SurfaceForce,
+        Some(TensionModel::SurfaceStress) => Continuum::SurfaceStress,
+        _ => return f64::NAN,
+    };
+    if d.kernel != KernelKind::WendlandC2 {
+        return f64::NAN;
+    }
+    mode_stiffness::stiffness_ratio(
+        model,
+        r_over_l0,
+        d.re_over_l0,
+        JITTER_OVER_L0,
+        EPS,
+        BAND_GRADIENT_TIMES_R_E,
+    )
 }
 
 /// [`DropPoint::elastic_periods_s`]: the lattice's moduli (potential and pressure term, lattice

@@ -1,7 +1,7 @@
 //! Bodies too coarse for the measurements, or thinner than the potential reaches.
 
 use super::{Check, Finding};
-use solver::scene::BodyShape;
+use solver::scene::{BodyShape, TensionModel};
 use solver::Scene;
 
 /// Fewest spacings across a body's smallest half-thickness (a drop's radius). The harness's
@@ -9,6 +9,11 @@ use solver::Scene;
 /// `measure::side_view` tests at R/8, R/10, R/16); the accuracy–cost study
 /// (`verify study accuracy-cost`, reports/study) measures the error at each resolution.
 pub const MIN_RADIUS_L0: f64 = 8.0;
+
+/// Fewest colour-kernel reaches `r_e` across a drop's radius under the surface force: at
+/// R = 1.2 and 1.4 r_e (R/l0 = 5 and 6 at r_e = 4.2 l0) its drop in a host gains energy and
+/// drifts instead of ringing down; at 2.4 r_e (R/l0 = 10) it rings down (docs/findings.md).
+pub const SURFACE_FORCE_MIN_RADIUS_RE: f64 = 1.5;
 
 /// The body's smallest half-thickness [m] along the axes that are not periodic (a body that
 /// fills a periodic axis has no size along it), or `None` if every axis is periodic.
@@ -74,6 +79,26 @@ pub fn findings(scene: &Scene) -> Vec<Finding> {
                     scene.discretisation.re_over_l0
                 ),
             });
+        } else if scene.effects.interfacial_tension == TensionModel::SurfaceForce
+            && half < SURFACE_FORCE_MIN_RADIUS_RE * r_e
+        {
+            out.push(Finding {
+                check: Check::Resolution,
+                subject: format!("body {}", b.name),
+                found: format!(
+                    "{:.2} colour-kernel reaches r_e = {:.3} mm across its smallest half-thickness ({:.3} mm)",
+                    half / r_e,
+                    1e3 * r_e,
+                    1e3 * half
+                ),
+                cause: format!(
+                    "the surface force's curvature spans the whole body: below {SURFACE_FORCE_MIN_RADIUS_RE} r_e its drops gained energy instead of ringing down (docs/findings.md)"
+                ),
+                fix: format!(
+                    "l0 ≤ {:.3e} m",
+                    half / (SURFACE_FORCE_MIN_RADIUS_RE * scene.discretisation.re_over_l0)
+                ),
+            });
         } else if across < MIN_RADIUS_L0 {
             out.push(Finding {
                 check: Check::Resolution,
@@ -109,6 +134,63 @@ mod tests {
         assert_eq!(f.len(), 1);
         assert_eq!(f[0].check, Check::Resolution);
         assert!(f[0].fix.contains("1.250e-4"), "{}", f[0]);
+    }
+
+    #[test]
+    fn under_the_surface_force_a_drop_within_one_and_a_half_reaches_is_flagged() {
+        let toml = |l0: f64| {
+            format!(
+                r#"
+                [discretisation]
+                l0 = {l0}
+                h_over_l0 = 1.3
+                re_over_l0 = 6.0
+                sound_speed = 4.0
+                [time]
+                end = 1e-3
+                output_interval = 1e-4
+                [effects]
+                interfacial_tension = "surface_force"
+                [periodic]
+                x = [-3e-3, 3e-3]
+                y = [-3e-3, 3e-3]
+                z = [-3e-3, 3e-3]
+                [[liquid]]
+                name = "water"
+                density = 1000.0
+                viscosity = 1e-3
+                surface_tension = 0.072
+                [[liquid]]
+                name = "host"
+                density = 1000.0
+                viscosity = 1e-3
+                surface_tension = 0.072
+                [[interface]]
+                liquids = ["water", "host"]
+                tension = 0.072
+                [[body]]
+                name = "drop"
+                liquid = "water"
+                shape = {{ kind = "sphere", center = [0.0, 0.0, 0.0], radius = 1e-3 }}
+                [[body]]
+                name = "host"
+                liquid = "host"
+                shape = {{ kind = "box_around_ellipsoid", min = [-3e-3, -3e-3, -3e-3], max = [3e-3, 3e-3, 3e-3], center = [0.0, 0.0, 0.0], semi_axes = [1e-3, 1e-3, 1e-3] }}
+                "#
+            )
+        };
+        // R = 1 mm at r_e = 6 l0: l0 = 0.1 mm gives 10 spacings (resolved by the generic
+        // bound) but 1.67 reaches; l0 = 0.125 mm gives 8 spacings and 1.33 reaches
+        let coarse = Scene::from_toml_str(&toml(1.25e-4)).unwrap();
+        let f = findings(&coarse);
+        assert_eq!(f.len(), 1, "{f:?}");
+        assert!(
+            f[0].found.contains("1.33 colour-kernel reaches"),
+            "{}",
+            f[0]
+        );
+        assert!(f[0].fix.contains("1.111e-4"), "{}", f[0]);
+        assert!(findings(&Scene::from_toml_str(&toml(1e-4)).unwrap()).is_empty());
     }
 
     #[test]

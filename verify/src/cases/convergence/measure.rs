@@ -9,14 +9,14 @@ use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::diagnostics::mode_stiffness::{self, Continuum};
-use solver::kernel::KernelKind;
-use solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E;
-use solver::scene::TensionModel;
 use crate::measure::geometry;
 use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
 use crate::measure::surface;
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
 use crate::suite::RunData;
+use solver::kernel::KernelKind;
+use solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E;
+use solver::scene::TensionModel;
 
 /// The free drop at one resolution.
 pub struct DropPoint<'r> {

@@ -28,7 +28,7 @@ use rayon::prelude::*;
 /// The band's threshold on `|∇c| r_e` [-]. The 2D prototypes' `|∇c| h_c > 0.1` (0.2 here)
 /// left about 4 % of a sphere's `∫|∇c|` out at every resolution, and the convergence case's
 /// l = 2 error did not fall with it (+4.1, +7.9, +7.5 % at R/l0 = 10, 14.1, 20); at 0.01 it
-/// falls (+8.7, +4.7, +2.8 %; docs/findings.md). Only isolated particles at the colour
+/// falls (+8.7, +4.6, +2.8 %; docs/findings.md). Only isolated particles at the colour
 /// kernel's edge, whose normals are noise, stay out.
 pub const BAND_GRADIENT_TIMES_R_E: f64 = 0.01;
 

@@ -328,7 +328,7 @@ impl Case for Convergence {
         let why = match f {
             Fidelity::Smoke => "seconds per run: that the case runs and fits",
             Fidelity::Standard => {
-                "the potential's runs about 45 min of one thread in all (measured twice, 40 and 44 min, each run on one thread beside another: the drops 0.5, 4–5 and 16–20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min); the continuum models' drops, host included (27,000, 74,088 and 216,000 particles), on two threads: the surface stress's 4, 10 and 88 min beside other work, the surface force's 3, 7 and 38 min"
+                "the potential's runs about 45 min of one thread in all (measured twice, 40 and 44 min, each run on one thread beside another: the drops 0.5, 4–5 and 16–20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min); the continuum models' drops, host included (27,000, 74,088 and 216,000 particles), on two threads: the surface stress's 4, 10 and 88 min beside other work, the surface force's 2, 10 (beside builds) and 29 min"
             }
             Fidelity::Paper => "one finer point of each beyond standard",
         };

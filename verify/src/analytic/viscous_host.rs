@@ -30,9 +30,9 @@
 //!
 //! - Linear theory, a clean interface (constant, uniform tension), incompressible liquids.
 //! - `δ ≪ R`: the corrections are the first terms of expansions in `√(ν/(ω R²))`. Dropped:
-//!   the next order of the frequency (Miller & Scriven's `+¼ α²`, of relative order
-//!   `(γ_bl/ω₀)²/… ≈ 0.1 %` for a 1 mm water drop in a water-like host) and the layer's own
-//!   `O(ν)` corrections to the damping, beside which `γ_bulk` stands.
+//!   the next order of the frequency (Miller & Scriven's `+¼ α² = γ_bl²/ω₀`, 0.13 % of `ω₀`
+//!   for a 1 mm water drop in a water-like host) and the layer's own `O(ν)` corrections to
+//!   the damping, beside which `γ_bulk` stands.
 //!
 //! # Invalid input
 //!

@@ -195,8 +195,9 @@ pub(crate) enum Command {
         jitter: f64,
     },
     /// The continuum models' stiffness against a lattice sphere's l = 2 mode (static: the
-    /// generalised force on Lamb's mode over its exact `3.2πσR²`), per model, colour-kernel
-    /// support and radius.
+    /// generalised force on a volume-preserving stretch into spheroids, over the spheroid's
+    /// exact `σ d²A/dε²`, which tends to Lamb's `3.2πσR²`), per model, colour-kernel support
+    /// and radius.
     Stiffness {
         /// Continuum models.
         #[arg(

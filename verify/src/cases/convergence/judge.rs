@@ -5,9 +5,11 @@ use super::measure::{CapPoint, DropPoint, Measured};
 use super::Series;
 use crate::suite::{Metric, Tolerance};
 
-/// A small-amplitude period within 3 % of Rayleigh's (docs/findings.md, "Targets of the liquid model").
+/// A small-amplitude period within 3 % of the drop's reference (Rayleigh's, or the viscous
+/// period in a host; docs/findings.md, "Targets of the liquid model").
 const PERIOD_TARGET: f64 = 0.03;
-/// A damping within ±30 % of Lamb's with ν + ν_AV (docs/findings.md, "Targets of the liquid model").
+/// A damping within ±30 % of the drop's reference decay with ν + ν_AV (Lamb's, or the boundary
+/// layer's and the bulk's in a host; docs/findings.md, "Targets of the liquid model").
 const DAMPING_TARGET: f64 = 0.30;
 
 /// The static-angle target [deg] at `theta_deg`: ±2° for 60–120°, ±4° at 30° and 150° (README,

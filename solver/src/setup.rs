@@ -27,74 +27,14 @@ pub fn build_particles(
     // every claimed lattice site with its owner (bodies, then walls); sorted afterwards, a
     // site claimed twice is an overlap — 28 bytes a site, freed when the check is done
     let mut claims: Vec<([i64; 3], u32)> = Vec::new();
-    let periodic = scene.periodic.ranges();
-    let mut claim = |idx: [i64; 3], owner: usize, p: [f64; 3]| -> Result<(), SceneError> {
-        // a particle outside a periodic range would overlap one of its own images
-        for (k, range) in periodic.iter().enumerate() {
-            if let Some([lo, hi]) = *range {
-                if !(lo..hi).contains(&p[k]) {
-                    let name = match scene.bodies.get(owner) {
-                        Some(b) => format!("body[{}]", b.name),
-                        None => format!("wall[{}]", scene.walls[owner - scene.bodies.len()].name),
-                    };
-                    return Err(SceneError::invalid(
-                        name,
-                        format!("a particle at {:?} m", p),
-                        format!(
-                            "every particle must lie within the periodic range [{lo:e}, {hi:e})                              m along {}",
-                            ["x", "y", "z"][k]
-                        ),
-                    ));
-                }
-            }
-        }
-        claims.push((idx, owner as u32));
-        Ok(())
-    };
-
-    let mut fluid_pos = Vec::new();
-    let mut fluid_vel = Vec::new();
-    let mut fluid_phase = Vec::new();
-    let mut inventory = Inventory::default();
+    let mut fluid = FluidSites::default();
+    let mut counts = vec![0; scene.bodies.len()];
     for (body_index, b) in scene.bodies.iter().enumerate() {
-        let (lo, hi) = b.shape.bounds();
-        let before = fluid_pos.len();
-        let mut err = None;
-        crate::scene::shapes_for_sites(lo, hi, l0, |idx, p| {
-            if err.is_some() || !b.shape.contains(p) {
-                return;
-            }
-            if let Err(e) = claim(idx, body_index, p) {
-                err = Some(e);
-                return;
-            }
-            let liquid = match (&b.liquid, &b.cut) {
-                (Some(l), _) => l.as_str(),
-                (None, Some(cut)) => cut.liquids[cut.side(p)].as_str(),
-                (None, None) => unreachable!("validated"),
-            };
-            fluid_pos.push(Vec3::from(p));
-            let wave = b.velocity_wave.as_ref().map_or([0.0; 3], |w| w.at(p));
-            fluid_vel.push(Vec3::from(b.velocity) + Vec3::from(wave));
-            fluid_phase.push(scene.liquid_index(liquid).expect("validated") as u8);
-        });
-        if let Some(e) = err {
-            return Err(e);
+        if !b.shape.is_surrounding() {
+            counts[body_index] = fill_body(scene, body_index, None, &mut claims, &mut fluid)?;
         }
-        let count = fluid_pos.len() - before;
-        if count < MIN_BODY_PARTICLES {
-            return Err(SceneError::invalid(
-                format!("body[{}].shape", b.name),
-                format!("{count} particles"),
-                format!(
-                    "a body needs at least {MIN_BODY_PARTICLES} particles at l0 = {l0:e} m; \
-                     make it larger or l0 smaller"
-                ),
-            ));
-        }
-        inventory.bodies.push((b.name.clone(), count));
     }
-
+    let mut inventory = Inventory::default();
     let mut wall_pos = Vec::new();
     let mut wall_phase = Vec::new();
     let mut no_slip = Vec::new();
@@ -107,7 +47,8 @@ pub fn build_particles(
             if err.is_some() {
                 return;
             }
-            if let Err(e) = claim(idx, scene.bodies.len() + wall_index, p) {
+            if let Err(e) = claim_site(scene, &mut claims, idx, scene.bodies.len() + wall_index, p)
+            {
                 err = Some(e);
                 return;
             }
@@ -123,8 +64,27 @@ pub fn build_particles(
             .push((w.name.clone(), wall_pos.len() - before, layers));
     }
 
+    // the surrounding bodies take the sites of their boxes that nothing else took
+    if scene.bodies.iter().any(|b| b.shape.is_surrounding()) {
+        let mut taken: Vec<[i64; 3]> = claims.iter().map(|c| c.0).collect();
+        taken.sort_unstable();
+        for (body_index, b) in scene.bodies.iter().enumerate() {
+            if b.shape.is_surrounding() {
+                counts[body_index] =
+                    fill_body(scene, body_index, Some(&taken), &mut claims, &mut fluid)?;
+            }
+        }
+    }
     check_overlaps(scene, &mut claims)?;
     drop(claims);
+    for (b, count) in scene.bodies.iter().zip(counts) {
+        inventory.bodies.push((b.name.clone(), count));
+    }
+    let FluidSites {
+        pos: fluid_pos,
+        vel: fluid_vel,
+        phase: fluid_phase,
+    } = fluid;
 
     let n_fluid = fluid_pos.len();
     let n = n_fluid + wall_pos.len();
@@ -158,6 +118,101 @@ pub fn build_particles(
         id: (0..n as u32).collect(),
     };
     Ok((particles, no_slip, inventory))
+}
+
+/// The fluid particles' sites, velocities [m/s] and phases, in the order they are built.
+#[derive(Default)]
+struct FluidSites {
+    pos: Vec<Vec3>,
+    vel: Vec<Vec3>,
+    phase: Vec<u8>,
+}
+
+/// Records that `owner` (a body's index, or the bodies' count plus a wall's) takes the lattice
+/// site `idx` at `p` [m]; refuses a site outside a periodic range, which would overlap one of
+/// its own images.
+fn claim_site(
+    scene: &Scene,
+    claims: &mut Vec<([i64; 3], u32)>,
+    idx: [i64; 3],
+    owner: usize,
+    p: [f64; 3],
+) -> Result<(), SceneError> {
+    for (k, range) in scene.periodic.ranges().iter().enumerate() {
+        if let Some([lo, hi]) = *range {
+            if !(lo..hi).contains(&p[k]) {
+                let name = match scene.bodies.get(owner) {
+                    Some(b) => format!("body[{}]", b.name),
+                    None => format!("wall[{}]", scene.walls[owner - scene.bodies.len()].name),
+                };
+                return Err(SceneError::invalid(
+                    name,
+                    format!("a particle at {:?} m", p),
+                    format!(
+                        "every particle must lie within the periodic range [{lo:e}, {hi:e}) \
+                         m along {}",
+                        ["x", "y", "z"][k]
+                    ),
+                ));
+            }
+        }
+    }
+    claims.push((idx, owner as u32));
+    Ok(())
+}
+
+/// Fills body `body_index` with particles on the lattice sites inside its shape, less the
+/// sites in `taken` (sorted; given for a surrounding body), and returns their count.
+fn fill_body(
+    scene: &Scene,
+    body_index: usize,
+    taken: Option<&[[i64; 3]]>,
+    claims: &mut Vec<([i64; 3], u32)>,
+    fluid: &mut FluidSites,
+) -> Result<usize, SceneError> {
+    let l0 = scene.discretisation.l0;
+    let b = &scene.bodies[body_index];
+    let (lo, hi) = b.shape.bounds();
+    let before = fluid.pos.len();
+    let mut err = None;
+    crate::scene::shapes_for_sites(lo, hi, l0, |idx, p| {
+        if err.is_some() || !b.shape.contains(p) {
+            return;
+        }
+        if taken.is_some_and(|t| t.binary_search(&idx).is_ok()) {
+            return;
+        }
+        if let Err(e) = claim_site(scene, claims, idx, body_index, p) {
+            err = Some(e);
+            return;
+        }
+        let liquid = match (&b.liquid, &b.cut) {
+            (Some(l), _) => l.as_str(),
+            (None, Some(cut)) => cut.liquids[cut.side(p)].as_str(),
+            (None, None) => unreachable!("validated"),
+        };
+        fluid.pos.push(Vec3::from(p));
+        let wave = b.velocity_wave.as_ref().map_or([0.0; 3], |w| w.at(p));
+        fluid.vel.push(Vec3::from(b.velocity) + Vec3::from(wave));
+        fluid
+            .phase
+            .push(scene.liquid_index(liquid).expect("validated") as u8);
+    });
+    if let Some(e) = err {
+        return Err(e);
+    }
+    let count = fluid.pos.len() - before;
+    if count < MIN_BODY_PARTICLES {
+        return Err(SceneError::invalid(
+            format!("body[{}].shape", b.name),
+            format!("{count} particles"),
+            format!(
+                "a body needs at least {MIN_BODY_PARTICLES} particles at l0 = {l0:e} m; \
+                 make it larger or l0 smaller"
+            ),
+        ));
+    }
+    Ok(count)
 }
 
 /// Refuses a lattice site claimed by two bodies or walls, naming both.

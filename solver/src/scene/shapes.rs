@@ -49,6 +49,15 @@ pub enum BodyShape {
         /// Its semi-axes along x, y, z [m].
         semi_axes: [f64; 3],
     },
+    /// Axis-aligned box `min ≤ x < max` less every lattice site the scene's other bodies and
+    /// walls occupy: the fluid around them (the gas or host a continuum capillarity model needs
+    /// declared as a liquid), filled after them.
+    Surrounding {
+        /// Lower corner [m].
+        min: [f64; 3],
+        /// Upper corner [m].
+        max: [f64; 3],
+    },
     /// Half ball: the flat face passes through `center`, the dome points along `pole`.
     Hemisphere {
         /// Centre of the flat face [m].
@@ -142,6 +151,11 @@ pub(crate) fn for_sites_in_box(
 }
 
 impl BodyShape {
+    /// Whether the shape is filled after the other bodies and walls, around them.
+    pub fn is_surrounding(&self) -> bool {
+        matches!(self, BodyShape::Surrounding { .. })
+    }
+
     /// Axis-aligned bounding box `(lo, hi)` [m].
     pub fn bounds(&self) -> ([f64; 3], [f64; 3]) {
         match *self {
@@ -169,13 +183,15 @@ impl BodyShape {
                 [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
                 [c[0] + a[0], c[1] + a[1], c[2] + a[2]],
             ),
-            BodyShape::Box { min, max } | BodyShape::BoxAroundEllipsoid { min, max, .. } => {
-                (min, max)
-            }
+            BodyShape::Box { min, max }
+            | BodyShape::BoxAroundEllipsoid { min, max, .. }
+            | BodyShape::Surrounding { min, max } => (min, max),
         }
     }
 
-    /// Whether the point `p` [m] lies inside the shape.
+    /// Whether the point `p` [m] lies inside the shape (for [`BodyShape::Surrounding`]: inside
+    /// its box; the sites other bodies and walls take are left out when the particles are
+    /// built).
     pub fn contains(&self, p: [f64; 3]) -> bool {
         match *self {
             BodyShape::Sphere { center, radius } => {
@@ -186,7 +202,9 @@ impl BodyShape {
                 let d = sub(p, center);
                 (0..3).map(|k| (d[k] / semi_axes[k]).powi(2)).sum::<f64>() < 1.0
             }
-            BodyShape::Box { min, max } => (0..3).all(|k| p[k] >= min[k] && p[k] < max[k]),
+            BodyShape::Box { min, max } | BodyShape::Surrounding { min, max } => {
+                (0..3).all(|k| p[k] >= min[k] && p[k] < max[k])
+            }
             BodyShape::BoxAroundEllipsoid {
                 min,
                 max,
@@ -235,7 +253,7 @@ impl BodyShape {
                     finite3(semi_axes) && semi_axes.iter().all(|&a| a > 0.0),
                 ),
             ],
-            BodyShape::Box { min, max } => vec![
+            BodyShape::Box { min, max } | BodyShape::Surrounding { min, max } => vec![
                 ("min", format!("{min:?}"), finite3(min)),
                 (
                     "max",

@@ -19,5 +19,6 @@ mod periodic;
 mod scene_errors;
 mod shifting;
 mod surface_stress;
+mod surrounding;
 mod tension_calibration;
 mod walls;

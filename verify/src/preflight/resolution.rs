@@ -20,6 +20,9 @@ pub const SURFACE_FORCE_MIN_RADIUS_RE: f64 = 1.5;
 fn half_thickness_m(shape: &BodyShape, periodic: [bool; 3]) -> Option<f64> {
     match *shape {
         BodyShape::Sphere { radius, .. } => Some(radius),
+        // its thickness is the gaps between what it surrounds and its box's faces, which the
+        // other bodies' own findings and the box's size bound: not checked here
+        BodyShape::Surrounding { .. } => None,
         // its height is its radius
         BodyShape::Hemisphere { radius, .. } => Some(0.5 * radius),
         BodyShape::Shell {

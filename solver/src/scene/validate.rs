@@ -670,7 +670,8 @@ fn tension_inputs(s: &Scene) -> R {
 /// The continuum models' own limits (the surface stress and the surface force): they act
 /// across interfaces between liquid phases, so a scene needs at least two liquids in its
 /// bodies (a liquid's free surface against empty space carries no tension: the surrounding gas
-/// is declared as a liquid); contact angles on walls are not built for them yet.
+/// is declared as a liquid); contact angles on walls are not built for them yet; the surface
+/// force takes at most three liquids.
 fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
     let name = match model {
         TensionModel::SurfaceForce => "surface_force",
@@ -686,6 +687,15 @@ fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
                  liquid and give the pair's [[interface]] tension",
                 name.replace('_', " ")
             ),
+        ));
+    }
+    if model == TensionModel::SurfaceForce && liquids_used > 3 {
+        return Err(SceneError::invalid(
+            "effects.interfacial_tension",
+            format!("\"{name}\" with {liquids_used} liquids"),
+            "the surface force splits each pair's tension into the liquids' shares \
+             (σ_ab = σ_a + σ_b), which is exact for up to three liquids: use at most three, or \
+             the potential (true)",
         ));
     }
     if let Some(w) = s.walls.first() {

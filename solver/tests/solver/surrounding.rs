@@ -145,3 +145,40 @@ shape = {{ kind = "surrounding", min = [0.0, 0.0, 0.0], max = [{HALF:e}, {HALF:e
         "{e}"
     );
 }
+
+#[test]
+fn the_surface_force_takes_three_liquids_and_refuses_a_fourth() {
+    let csf = |extra: &str| {
+        two_drops_in_host(extra).replace(
+            "laminar_viscosity = true",
+            "laminar_viscosity = true\ninterfacial_tension = \"surface_force\"",
+        )
+    };
+    // two drops in a host: three liquids, each pair's tension split into their shares
+    sim(&csf(""));
+    let fourth = r#"
+[[liquid]]
+name = "c"
+density = 1000.0
+viscosity = 1.0e-3
+surface_tension = 0.07
+[[interface]]
+liquids = ["a", "c"]
+tension = 0.05
+[[interface]]
+liquids = ["b", "c"]
+tension = 0.05
+[[interface]]
+liquids = ["host", "c"]
+tension = 0.07
+[[body]]
+name = "drop_c"
+liquid = "c"
+shape = { kind = "sphere", center = [0.0, 0.0, 8.0e-4], radius = 2.0e-4 }
+"#;
+    let e = error_of(&csf(fourth));
+    assert!(
+        e.contains("effects.interfacial_tension") && e.contains("4 liquids"),
+        "{e}"
+    );
+}

@@ -4,7 +4,9 @@
 //! has the surface stress's inputs and colour gradients, but no tangential tension: the 2D
 //! prototypes' flat capillary wave paired under the stress and not under this force.
 //!
-//! For each pair of liquids `a < b` with `σ_ab > 0`, on the particles of `a` and `b`:
+//! For each interface term ([`interface_terms`]: the pair of liquids `a | b` with its `σ_ab`, or
+//! with three liquids each liquid against the other two with its share `σ_k`), on the
+//! particles of its two sides `a` and `b`:
 //! - the colour gradient `g_i = ∇c_b` [1/m], pointing into `b`: `G_i^b` on `a`'s particles and
 //!   `−G_i^a` on `b`'s ([`StressInput::colour_gradient`]);
 //! - where `|g_i| > 0.01/r_e` (the band: nearly all of the colour kernel's reach), the normal
@@ -93,58 +95,119 @@ impl ForceScratch {
         self.energy.clear();
         self.energy.resize(n, 0.0);
         let band = self.band_gradient_times_r_e / inp.kernel.support_m();
-        for a in 0..n_liquids {
-            for b in a + 1..n_liquids {
-                let s = sigma(a, b);
-                if s == 0.0 {
-                    continue;
-                }
-                let (a8, b8) = (a as u8, b as u8);
-                interface_gradient(inp, a8, b8, &self.spills, &mut self.gradient);
-                // the normal in the band
-                self.normal
-                    .par_iter_mut()
-                    .zip(self.gradient.par_iter())
-                    .for_each(|(nrm, g)| {
-                        let m = g.norm();
-                        *nrm = if m > band { *g / m } else { Vec3::zeros() };
-                    });
-                curvature_sums(inp, &self.normal, &self.spills, &mut self.sums);
-                let (grad, sums) = (&self.gradient, &self.sums);
-                self.force
-                    .par_iter_mut()
-                    .zip(self.curvature.par_iter_mut())
-                    .zip(self.energy.par_iter_mut())
-                    .enumerate()
-                    .for_each(|(i, ((f, k), e))| {
-                        let g = grad[i];
-                        if g == Vec3::zeros() {
-                            return;
-                        }
-                        *e += inp.vol[i] * s * g.norm();
-                        let [num, den, _] = [sums[i].x, sums[i].y, sums[i].z];
-                        if den <= 0.0 {
-                            return;
-                        }
-                        *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
-                        *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
-                    });
-            }
+        for (sides, s) in interface_terms(n_liquids, &sigma) {
+            interface_gradient(inp, sides, &self.spills, &mut self.gradient);
+            // the normal in the band
+            self.normal
+                .par_iter_mut()
+                .zip(self.gradient.par_iter())
+                .for_each(|(nrm, g)| {
+                    let m = g.norm();
+                    *nrm = if m > band { *g / m } else { Vec3::zeros() };
+                });
+            curvature_sums(inp, &self.normal, &self.spills, &mut self.sums);
+            let (grad, sums) = (&self.gradient, &self.sums);
+            self.force
+                .par_iter_mut()
+                .zip(self.curvature.par_iter_mut())
+                .zip(self.energy.par_iter_mut())
+                .enumerate()
+                .for_each(|(i, ((f, k), e))| {
+                    let g = grad[i];
+                    if g == Vec3::zeros() {
+                        return;
+                    }
+                    *e += inp.vol[i] * s * g.norm();
+                    let [num, den, _] = [sums[i].x, sums[i].y, sums[i].z];
+                    if den <= 0.0 {
+                        return;
+                    }
+                    *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
+                    *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
+                });
         }
         // a fixed-order sum: the same bits for any thread count
         self.interface_energy_j = self.energy.iter().sum();
     }
 }
 
-/// The colour gradient `∇c_b` [1/m] of the pair of phases `a ≠ b` at their particles, into
-/// `out` (zero elsewhere), in one pass over the pairs across the interface: `G_i^b` on `a`'s
-/// particles and `−G_i^a` on `b`'s ([`StressInput::colour_gradient`]'s sums, here both at
-/// once). A pair `i, j` across adds `s V_j ∇_i W_c` to `i` and `s V_i ∇_i W_c` to `j`, with
-/// `s = +1` if `i` is of `a` and `−1` if it is of `b`.
+/// The two sides of an interface term: a pair of liquids `a | b`, or one liquid against all
+/// the others.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sides {
+    /// Liquid `a` (side A) against liquid `b` (side B).
+    Pair(u8, u8),
+    /// Liquid `k` (side A) against every other liquid (side B).
+    Phase(u8),
+}
+
+impl Sides {
+    /// `+1` for a liquid phase on side A, `−1` on side B, `0` on neither.
+    #[inline(always)]
+    fn of(self, phase: u8) -> f64 {
+        match self {
+            Sides::Pair(a, _) | Sides::Phase(a) if phase == a => 1.0,
+            Sides::Pair(_, b) if phase == b => -1.0,
+            Sides::Phase(_) => -1.0,
+            Sides::Pair(..) => 0.0,
+        }
+    }
+}
+
+/// The interface terms of the force with their tensions [N/m], given the tension
+/// `sigma(a, b)` [N/m] of each pair of the `n_liquids` liquid phases (zero: none).
+///
+/// With one pair of liquids, that pair `a | b` and its `σ_ab`. With three liquids, each
+/// against the other two with its own share `σ_k = ½(σ_kl + σ_km − σ_lm)`, so that
+/// `σ_ab = σ_a + σ_b` on every interface (docs/model.md §4b): each liquid's interface is closed,
+/// and at a triple line the three terms meet as the tensions balance, where a pair's colour
+/// gradient would end at an open edge. Four or more liquids with tensions are refused by the
+/// scene's validation (the split is overdetermined); here they keep their pairs.
+pub fn interface_terms(
+    n_liquids: usize,
+    sigma: &impl Fn(usize, usize) -> f64,
+) -> Vec<(Sides, f64)> {
+    let mut pairs = Vec::new();
+    let mut liquids = Vec::new();
+    for a in 0..n_liquids {
+        for b in a + 1..n_liquids {
+            let s = sigma(a, b);
+            if s != 0.0 {
+                pairs.push((Sides::Pair(a as u8, b as u8), s));
+                for k in [a, b] {
+                    if !liquids.contains(&k) {
+                        liquids.push(k);
+                    }
+                }
+            }
+        }
+    }
+    if liquids.len() != 3 {
+        return pairs;
+    }
+    liquids.sort_unstable();
+    let [k, l, m] = [liquids[0], liquids[1], liquids[2]];
+    let share = |k, l, m| 0.5 * (sigma(k, l) + sigma(k, m) - sigma(l, m));
+    [
+        (k, share(k, l, m)),
+        (l, share(l, k, m)),
+        (m, share(m, k, l)),
+    ]
+    .into_iter()
+    .filter(|&(_, s)| s != 0.0)
+    .map(|(k, s)| (Sides::Phase(k as u8), s))
+    .collect()
+}
+
+/// The colour gradient [1/m] of an interface term at the particles of its two sides, into
+/// `out` (zero elsewhere), pointing from side A into side B, in one pass over the pairs across
+/// the interface: `∇c_B` on A's particles and `−∇c_A` on B's ([`StressInput::colour_gradient`]'s
+/// sums, here both at once). A pair `i, j` across adds `s V_j ∇_i W_c` to `i` and
+/// `s V_i ∇_i W_c` to `j`, with `s = +1` if `i` is on side A and `−1` if on side B. Walls are
+/// not visited.
 fn interface_gradient<K: Kernel>(
     inp: &StressInput<K>,
-    a: u8,
-    b: u8,
+    sides: Sides,
     spills: &Spills,
     out: &mut [Vec3],
 ) {
@@ -152,17 +215,13 @@ fn interface_gradient<K: Kernel>(
     let phase = inp.phase;
     each_pair_once(out, spills, |i, reactions: &mut Reactions| {
         let mut g = Vec3::zeros();
-        let other = if phase[i] == a {
-            b
-        } else if phase[i] == b {
-            a
-        } else {
+        let sign = sides.of(phase[i]);
+        if sign == 0.0 {
             return g;
-        };
-        let sign = if phase[i] == a { 1.0 } else { -1.0 };
+        }
         inp.each_later_neighbour(
             i,
-            |j| phase[j] == other,
+            |j| sides.of(phase[j]) == -sign,
             |j, grad_w, _| {
                 g += grad_w * (sign * inp.vol[j]);
                 reactions.subtract(j, grad_w * (-sign * inp.vol[i]));

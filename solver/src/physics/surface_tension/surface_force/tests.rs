@@ -100,3 +100,88 @@ fn the_same_bits_for_any_thread_count() {
         );
     }
 }
+
+/// Tensions [N/m] of three liquids: 0|1, 0|2 and 1|2.
+fn three(s01: f64, s02: f64, s12: f64) -> impl Fn(usize, usize) -> f64 {
+    move |a, b| match (a.min(b), a.max(b)) {
+        (0, 1) => s01,
+        (0, 2) => s02,
+        (1, 2) => s12,
+        _ => 0.0,
+    }
+}
+
+#[test]
+fn three_liquids_split_each_pairs_tension_into_the_liquids_shares() {
+    // one pair with a tension (a third liquid declared without any): that pair as it is
+    let one = interface_terms(3, &|a, b| if a + b == 1 { 0.3 } else { 0.0 });
+    assert_eq!(one, vec![(Sides::Pair(0, 1), 0.3)]);
+    // three: σ_a + σ_b = σ_ab on every interface, exactly for these binary fractions
+    let terms = interface_terms(3, &three(0.5, 0.75, 0.625));
+    let share = |k: u8| {
+        terms
+            .iter()
+            .find(|t| t.0 == Sides::Phase(k))
+            .map_or(0.0, |t| t.1)
+    };
+    assert_eq!(terms.len(), 3);
+    assert_eq!(share(0) + share(1), 0.5);
+    assert_eq!(share(0) + share(2), 0.75);
+    assert_eq!(share(1) + share(2), 0.625);
+    // a share of zero is no term: σ12 = σ01 + σ02 leaves liquid 0 none
+    let terms = interface_terms(3, &three(0.25, 0.5, 0.75));
+    assert!(terms.iter().all(|t| t.0 != Sides::Phase(0)), "{terms:?}");
+}
+
+#[test]
+fn the_liquids_shares_give_the_pairs_force_where_two_liquids_meet() {
+    // a sphere of liquid 0 in liquid 1; liquid 2, declared with tensions, has no particle:
+    // the shares σ_0 + σ_1 = σ_01 must give the pair form's force, up to round-off
+    let n = 24;
+    let centre = Vec3::repeat(0.5 * n as f64 * L0);
+    let c = cloud(
+        lattice([n, n, n]),
+        |x| u8::from((x - centre).norm() >= 6.0 * L0),
+        PeriodicBox::OPEN,
+    );
+    let mut pair = ForceScratch::default();
+    pair.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 });
+    let mut shares = ForceScratch::default();
+    shares.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA));
+    let scale = pair.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
+    assert!(scale > 0.0);
+    let worst = pair
+        .force
+        .iter()
+        .zip(&shares.force)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).norm()));
+    // round-off of the two halves' sums (~10³ terms each) against the force's largest value
+    assert!(worst < 1e-12 * scale, "{worst:e} N against {scale:e} N");
+    let e = (shares.interface_energy_j / pair.interface_energy_j - 1.0).abs();
+    assert!(e < 1e-12, "{e:e}");
+}
+
+#[test]
+fn three_flat_layers_have_no_curvature_and_no_force() {
+    // a periodic column of three layers, 0 | 1 | 2 along z: three flat interfaces
+    let b = PeriodicBox::new([
+        Some([0.0, 10.0 * L0]),
+        Some([0.0, 10.0 * L0]),
+        Some([0.0, 30.0 * L0]),
+    ]);
+    let c = cloud(lattice([10, 10, 30]), |x| (x.z / (10.0 * L0)) as u8, b);
+    let mut s = ForceScratch::default();
+    s.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA));
+    // as the two-liquid flat test: every normal is ±z up to its lattice sum's round-off
+    let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
+    assert!(force_max < 1e-12 * SIGMA * L0, "{force_max:e} N");
+    // the energy estimate is Σ σ_ab A_ab over the three interfaces (each 100 l0²), up to the
+    // colour kernel's lattice moment, as in the two-liquid test
+    let area = 100.0 * L0 * L0;
+    let expected = (1.0 + 0.7 + 0.9) * SIGMA * area * lattice_moment();
+    assert!(
+        (s.interface_energy_j / expected - 1.0).abs() < 1e-12,
+        "{} {expected}",
+        s.interface_energy_j
+    );
+}

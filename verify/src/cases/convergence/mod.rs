@@ -33,7 +33,7 @@ mod judge;
 mod measure;
 
 use super::analysis::{self, Analysis};
-use super::scene::{sound_speed_for, LiquidProps, SceneBuilder, MATTE};
+use super::scene::{laplace_sound_speed, sound_speed_for, LiquidProps, SceneBuilder, MATTE};
 use crate::analytic::lamb;
 use crate::measure::convergence::observed_order;
 use crate::measure::shape::axial_quadrupole_q2;
@@ -177,10 +177,10 @@ fn host_period_s() -> f64 {
     )
 }
 
-/// The sound speed of the surface-stress drop [m/s]: its Laplace pressure 2σ/R compresses the
-/// drop by 1 % (`c² = 2σ/(R · 0.01 ρ)`; no cohesive pressure to carry: the model has none).
+/// The sound speed of the continuum models' drops [m/s]: the water drop's Laplace pressure
+/// compresses it by 1 % ([`laplace_sound_speed`]).
 fn css_sound_speed_m_s() -> f64 {
-    (2.0 * WATER_20C.surface_tension_n_m / (RADIUS_M * 0.01 * WATER_20C.density_kg_m3)).sqrt()
+    laplace_sound_speed(&WATER_20C, RADIUS_M)
 }
 
 /// End times [s] of the free drop (the transient and two Rayleigh periods) and of the caps

@@ -15,10 +15,15 @@ pub fn plots(
     dir: &Path,
 ) -> anyhow::Result<()> {
     // the runs from touching drops: the merged starts are judged only on parting
-    let runs: Vec<&DoubletRun> = all.iter().filter(|m| m.start == Start::Touching).collect();
+    let touching = |csf: bool| -> Vec<&DoubletRun> {
+        all.iter()
+            .filter(|m| m.start == Start::Touching && m.surface_force == csf)
+            .collect()
+    };
+    let (runs, csf) = (touching(false), touching(true));
     let runs = &runs[..];
     histories(title, runs, dir)?;
-    equilibrium(sigma_n_m, runs, dir)?;
+    equilibrium(sigma_n_m, runs, &csf, dir)?;
     let fitted = |y: fn(&DoubletRun) -> Option<f64>| -> Vec<(f64, f64)> {
         runs.iter()
             .filter_map(|m| Some((m.sigma12_n_m, y(m)?)))
@@ -65,7 +70,14 @@ fn histories(title: &str, runs: &[&DoubletRun], dir: &Path) -> anyhow::Result<()
     )
 }
 
-fn equilibrium((s1, s2): (f64, f64), runs: &[&DoubletRun], dir: &Path) -> anyhow::Result<()> {
+/// The equilibrium against σ12: the analytic doublet, the potential's `runs` and the surface
+/// force's `csf` runs (drops in a host).
+fn equilibrium(
+    (s1, s2): (f64, f64),
+    runs: &[&DoubletRun],
+    csf: &[&DoubletRun],
+    dir: &Path,
+) -> anyhow::Result<()> {
     let v0 = drop_volume_m3();
     let analytic_curve: Vec<(f64, f64)> = (1..=79)
         .map(|k| k as f64 * 0.01)
@@ -76,29 +88,39 @@ fn equilibrium((s1, s2): (f64, f64), runs: &[&DoubletRun], dir: &Path) -> anyhow
                 .map(|d| (s, d.g1g2_m / R0_M))
         })
         .collect();
-    let measured = runs
-        .iter()
-        .map(|m| (m.sigma12_n_m, m.separation.equilibrium))
-        .collect();
+    let measured = |runs: &[&DoubletRun]| -> Vec<(f64, f64)> {
+        runs.iter()
+            .map(|m| (m.sigma12_n_m, m.separation.equilibrium))
+            .collect()
+    };
+    let mut series = vec![
+        Series {
+            label: "analytic doublet (Neumann)".into(),
+            points: analytic_curve,
+            kind: SeriesKind::Dashed,
+            color: 0,
+        },
+        Series {
+            label: "this project (mean of last quarter)".into(),
+            points: measured(runs),
+            kind: SeriesKind::Markers,
+            color: 2,
+        },
+    ];
+    if !csf.is_empty() {
+        series.push(Series {
+            label: "surface force, in a host (mean of last quarter)".into(),
+            points: measured(csf),
+            kind: SeriesKind::Markers,
+            color: 3,
+        });
+    }
     plot::draw(
         &Plot {
             title: "Equilibrium centroid distance against σ12".into(),
             x_label: "σ12 [N/m]".into(),
             y_label: "G1G2 / R0 [-]".into(),
-            series: vec![
-                Series {
-                    label: "analytic doublet (Neumann)".into(),
-                    points: analytic_curve,
-                    kind: SeriesKind::Dashed,
-                    color: 0,
-                },
-                Series {
-                    label: "this project (mean of last quarter)".into(),
-                    points: measured,
-                    kind: SeriesKind::Markers,
-                    color: 2,
-                },
-            ],
+            series,
             x_range: None,
             y_range: None,
             hlines: vec![(2.0, "touching spheres".into())],

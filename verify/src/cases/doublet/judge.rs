@@ -33,13 +33,16 @@ impl Judge<'_> {
             out.extend(self.run_metrics(m)?);
         }
         if self.pair == Pair::Equal {
-            let touching = |m: &&DoubletRun| m.start == Start::Touching;
-            let touching: Vec<&DoubletRun> = runs.iter().filter(touching).collect();
-            let merged: Vec<&DoubletRun> =
-                runs.iter().filter(|m| m.start == Start::Merged).collect();
-            out.extend(self.trends(runs));
-            out.extend(self.threshold(&touching, Start::Touching));
-            out.extend(self.threshold(&merged, Start::Merged));
+            let of = |start: Start, csf: bool| -> Vec<&DoubletRun> {
+                runs.iter()
+                    .filter(|m| m.start == start && m.surface_force == csf)
+                    .collect()
+            };
+            let potential: Vec<&DoubletRun> = runs.iter().filter(|m| !m.surface_force).collect();
+            out.extend(self.trends(&potential));
+            out.extend(self.threshold(&of(Start::Touching, false), Start::Touching));
+            out.extend(self.threshold(&of(Start::Merged, false), Start::Merged));
+            out.extend(self.threshold(&of(Start::Touching, true), Start::Touching));
         } else {
             out.extend(self.ground_states(runs)?);
         }
@@ -101,6 +104,11 @@ impl Judge<'_> {
             Start::Engulfed => "engulfed start",
             Start::Fine => "touching start, R0/l0 = 16.7",
         };
+        let how = if runs[0].surface_force {
+            format!("{how}, surface force")
+        } else {
+            how.to_string()
+        };
         let mut out = Vec::new();
         if start == Start::Merged {
             for m in runs {
@@ -153,10 +161,11 @@ impl Judge<'_> {
     }
 
     /// A run's σ12 as its metrics' names show it, with the resolution where it is not the
-    /// case's own.
+    /// case's own and the model where it is not the paper's.
     fn tag(&self, m: &DoubletRun) -> String {
         match m.start {
             Start::Fine => format!("{} (R0/l0 = {:.1})", S12(m.sigma12_n_m), R0_M / m.l0_m),
+            _ if m.surface_force => format!("{} (surface force)", S12(m.sigma12_n_m)),
             _ => S12(m.sigma12_n_m).to_string(),
         }
     }
@@ -372,7 +381,7 @@ impl Judge<'_> {
 
     /// The paper's trends (Figs. 8–9), reported, not judged: the σ12 of the shortest period
     /// and of the strongest damping, below σ12 = 0.8 N/m.
-    fn trends(&self, runs: &[DoubletRun]) -> Vec<Metric> {
+    fn trends(&self, runs: &[&DoubletRun]) -> Vec<Metric> {
         let fits: Vec<(f64, f64, f64)> = runs
             .iter()
             .filter_map(|m| {

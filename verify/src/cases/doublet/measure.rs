@@ -19,6 +19,8 @@ pub struct DoubletRun<'r> {
     pub sigma12_n_m: f64,
     /// How it started.
     pub start: Start,
+    /// Under the continuum surface force, in a host liquid (else the paper's potential).
+    pub surface_force: bool,
     /// Its particle spacing [m].
     pub l0_m: f64,
     /// The liquid-1 particles closer than 1.5 l0 to a liquid-2 particle at the end: the
@@ -91,6 +93,8 @@ pub fn doublet_runs<'r>(
             index,
             sigma12_n_m: s12,
             start: start_of(run),
+            surface_force: run.info.scene.effects.interfacial_tension
+                == solver::scene::TensionModel::SurfaceForce,
             l0_m,
             contact_particles,
             regime_seen: regime_seen(&cloud, &classes, g_final, l0_m),

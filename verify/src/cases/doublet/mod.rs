@@ -18,7 +18,7 @@ mod measure;
 
 use super::analysis::{self, Analysis};
 use super::paper_values;
-use super::scene::{LiquidProps, SceneBuilder, MATTE, SLAG};
+use super::scene::{laplace_sound_speed, LiquidProps, SceneBuilder, MATTE, SLAG};
 use crate::suite::{
     smoke_is_coarse, Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec,
 };
@@ -99,6 +99,55 @@ impl Doublet {
             (Pair::MatteSlag, Fidelity::Standard | Fidelity::Paper) => vec![0.1, 0.2],
             _ => vec![],
         }
+    }
+
+    /// The σ12 [N/m] of the runs under the continuum surface force (drops in a host), beside
+    /// the paper's potential: two of the paper's lenses, one near the separation limit 2σ1 and
+    /// one beyond it (the limit's bracket).
+    fn surface_force_sigma12_values(&self, f: Fidelity) -> Vec<f64> {
+        match (self.0, f) {
+            (Pair::Equal, Fidelity::Standard) => vec![0.2, 0.4, 0.76, 0.84],
+            _ => vec![],
+        }
+    }
+
+    /// The two touching drops under the continuum surface force (docs/model.md §4b) in a host
+    /// liquid of their density and viscosity filling a periodic box one R0 beyond them
+    /// (8 spacings, 1.9 r_e), each drop's σ its tension against the host: the gas the
+    /// potential leaves empty, declared as a liquid. The continuum models' kernel (h = 1.3 l0)
+    /// and sound speed (the drop's Laplace pressure compresses it by 1 %), as the convergence
+    /// case's drops in a host.
+    fn scene_in_host(&self, f: Fidelity, sigma12: f64) -> solver::Scene {
+        let (a, b) = self.liquids();
+        let l0 = Self::l0(f);
+        let sphere = |x: f64| BodyShape::Sphere {
+            center: [x, 0.0, 0.0],
+            radius: R0_M,
+        };
+        let (min, max) = (
+            [-3.0 * R0_M, -2.0 * R0_M, -2.0 * R0_M],
+            [3.0 * R0_M, 2.0 * R0_M, 2.0 * R0_M],
+        );
+        SceneBuilder::new(l0, laplace_sound_speed(&a, R0_M))
+            .time(IN_HOST_END_S, 1.0e-4)
+            .kernel(
+                solver::kernel::KernelKind::WendlandC2,
+                CONTINUUM_H_OVER_L0,
+                solver::scene::Setting::Natsui2021.re_over_l0(),
+            )
+            .paper_effects()
+            .tension_model(solver::scene::TensionModel::SurfaceForce)
+            .liquid(&a)
+            .liquid(&b)
+            .liquid(&HOST)
+            .interface(a.name, b.name, sigma12)
+            .interface(a.name, HOST.name, a.surface_tension_n_m)
+            .interface(b.name, HOST.name, b.surface_tension_n_m)
+            .body("drop1", a.name, sphere(-R0_M))
+            .body("drop2", b.name, sphere(R0_M))
+            .body("host", HOST.name, BodyShape::Surrounding { min, max })
+            .periodic_box(min, max)
+            .build()
     }
 
     /// The σ12 [N/m] of the lens runs repeated at the paper's spacing (R0/l0 = 16.7) in the
@@ -211,6 +260,19 @@ pub enum Start {
 /// Initial radius of each drop [m].
 const R0_M: f64 = 1.0e-3;
 
+/// The host of the drops under the surface force: matte's density and viscosity (its σ is
+/// not used: each drop's own σ is its tension against the host).
+const HOST: LiquidProps = MATTE.named("host");
+
+/// The end of the runs in a host [s]: twice the potential's 30 ms. The host doubles the
+/// inertia, and the liquids' own viscosity damps the doublet's oscillation far less than the
+/// potential's elasticity does: a trial at σ12 = 0.4 N/m still swung ±0.12 in G1G2/R0 over
+/// 22–30 ms.
+const IN_HOST_END_S: f64 = 0.06;
+
+/// `h/l0` of the continuum models (the convergence case's drops in a host).
+const CONTINUUM_H_OVER_L0: f64 = 1.3;
+
 /// Volume of each drop [m³].
 fn drop_volume_m3() -> f64 {
     4.0 / 3.0 * std::f64::consts::PI * R0_M.powi(3)
@@ -264,7 +326,7 @@ impl Case for Doublet {
         let why = match f {
             Fidelity::Smoke => "R0/l0 = 5, 12 ms: a seconds-scale check that the doublet forms",
             Fidelity::Standard => match self.0 {
-                Pair::Equal => "R0/l0 = 8, 30 ms: the interface is 8 spacings across and the oscillation has decayed (G1G2 within 3 % of the analytic equilibrium at σ12 = 0.4); the paper's R0/l0 = 16.7 costs 10× more. Beside the paper's σ12, a sweep across 2σ1 from touching drops and from one drop cut in two",
+                Pair::Equal => "R0/l0 = 8, 30 ms: the interface is 8 spacings across and the oscillation has decayed (G1G2 within 3 % of the analytic equilibrium at σ12 = 0.4); the paper's R0/l0 = 16.7 costs 10× more. Beside the paper's σ12, a sweep across 2σ1 from touching drops and from one drop cut in two; and four σ12 under the continuum surface force, the drops in a host liquid (49,152 particles, h = 1.3 l0, 60 ms)",
                 Pair::MatteSlag => "R0/l0 = 8, 30 ms (100 ms at σ12 ≤ 0.2, where engulfing is slow, each also started engulfed); σ12 = 0.5, whose nearly flat interface R0/l0 = 8 cannot measure, also at the paper's R0/l0 = 16.7 (20× the cost)",
             },
             Fidelity::Paper => "the paper's l0 = 0.06 mm (19,430 per drop), dt = 1e-6 s, 0.1 s",
@@ -291,10 +353,19 @@ impl Case for Doublet {
             snapshot_times_s: vec![],
         };
         let touching = touching.into_iter().map(|s| spec(s, Start::Touching));
+        let in_host = self
+            .surface_force_sigma12_values(f)
+            .into_iter()
+            .map(|s| RunSpec {
+                id: format!("csf_sigma12_{s:.2}"),
+                scene: self.scene_in_host(f, s),
+                snapshot_times_s: vec![],
+            });
         touching
             .chain(merged.into_iter().map(|s| spec(s, Start::Merged)))
             .chain(engulfed.into_iter().map(|s| spec(s, Start::Engulfed)))
             .chain(fine.into_iter().map(|s| spec(s, Start::Fine)))
+            .chain(in_host)
             .collect()
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {

@@ -45,6 +45,13 @@ pub fn sound_speed_for(liquid: &LiquidProps, l0_m: f64, floor_m_s: f64) -> f64 {
         .max(floor_m_s)
 }
 
+/// The sound speed [m/s] of a continuum capillarity model's drop of `radius_m` [m]: its Laplace
+/// pressure 2σ/R compresses it by 1 % (`c² = 2σ/(R · 0.01 ρ)`; the continuum models carry no
+/// cohesive pressure).
+pub fn laplace_sound_speed(liquid: &LiquidProps, radius_m: f64) -> f64 {
+    (2.0 * liquid.surface_tension_n_m / (radius_m * 0.01 * liquid.density_kg_m3)).sqrt()
+}
+
 /// Gravity of Natsui 2021's scenes on a plate [m/s²] (paper B's cases use 9.81 m/s², see
 /// `substrate`).
 pub const GRAVITY_M_S2: [f64; 3] = [0.0, 0.0, -9.8];

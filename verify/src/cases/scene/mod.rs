@@ -6,5 +6,6 @@ mod materials;
 
 pub use builder::SceneBuilder;
 pub use materials::{
-    artificial_viscosity_m2_s, sound_speed_for, LiquidProps, GRAVITY_M_S2, MATTE, SLAG,
+    artificial_viscosity_m2_s, laplace_sound_speed, sound_speed_for, LiquidProps, GRAVITY_M_S2,
+    MATTE, SLAG,
 };

@@ -203,7 +203,17 @@ impl Judge<'_> {
                 metric.note(format!("{status}mean over the last quarter (±{g_sd:.3}); σ12 ≥ σ1 + σ2: touching spheres give 2, parting more")),
             ]
         } else if let Ok(d) = neumann::doublet(s1, s2, s12, v0, v0) {
-            vec![metric.against(d.g1g2_m / R0_M, self.g1g2_tolerance(g_sd, m.l0_m)).note(format!("{status}mean over the last quarter of the run (residual oscillation ±{g_sd:.3}); reference: the analytic doublet (spherical caps at the Neumann angles, equal volumes)"))]
+            let reference = d.g1g2_m / R0_M;
+            let mut out = vec![metric.against(reference, self.g1g2_tolerance(g_sd, m.l0_m)).note(format!("{status}mean over the last quarter of the run (residual oscillation ±{g_sd:.3}); reference: the analytic doublet (spherical caps at the Neumann angles, equal volumes)"))];
+            // in a host the doublet rings for longer than the run: the fit's centre beside it
+            if let (true, Some(fit)) = (m.surface_force, &m.separation.fit) {
+                out.push(
+                    Metric::new(self.case, format!("G1G2/R0 fitted centre σ12={}", self.tag(m)), "-", fit.offset)
+                        .run(m.run)
+                        .note(format!("{status}the centre of a damped cosine fitted to the whole G1G2(t) (period {:.1} ms, decay {:.0} 1/s); the analytic doublet's {reference:.3}", fit.period_s * 1e3, fit.damping_rate_per_s)),
+                );
+            }
+            out
         } else {
             vec![metric.note(format!(
                 "{status}mean over the last quarter (±{g_sd:.3}); no lens: complete engulfing"

@@ -28,8 +28,8 @@ pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
     /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes about
-    /// 8.9 h — the committed runs' own wall times: 6.5 h of one thread for the runs made on one
-    /// thread (3.3 h on 2 cores, two runs at a time) and 2.4 h on two threads for the six drops
+    /// 11.1 h — the committed runs' own wall times: 8.7 h of one thread for the runs made on one
+    /// thread (4.4 h on 2 cores, two runs at a time) and 2.4 h on two threads for the six drops
     /// under the continuum models; finished runs are reused, so `all` then only re-reports.
     Standard,
     /// The papers' particle counts and time steps.

@@ -266,8 +266,8 @@ const HOST: LiquidProps = MATTE.named("host");
 
 /// The end of the runs in a host [s]: twice the potential's 30 ms. The host doubles the
 /// inertia, and the liquids' own viscosity damps the doublet's oscillation far less than the
-/// potential's elasticity does: a trial at σ12 = 0.4 N/m still swung ±0.12 in G1G2/R0 over
-/// 22–30 ms.
+/// potential's elasticity does: over the last quarter of 30 ms the σ12 = 0.4 N/m run still
+/// swings between 1.16 and 1.68 in G1G2/R0 (over 45–60 ms: ±0.09).
 const IN_HOST_END_S: f64 = 0.06;
 
 /// `h/l0` of the continuum models (the convergence case's drops in a host).

@@ -120,10 +120,6 @@ impl Doublet {
     fn scene_in_host(&self, f: Fidelity, sigma12: f64) -> solver::Scene {
         let (a, b) = self.liquids();
         let l0 = Self::l0(f);
-        let sphere = |x: f64| BodyShape::Sphere {
-            center: [x, 0.0, 0.0],
-            radius: R0_M,
-        };
         let (min, max) = (
             [-3.0 * R0_M, -2.0 * R0_M, -2.0 * R0_M],
             [3.0 * R0_M, 2.0 * R0_M, 2.0 * R0_M],
@@ -143,8 +139,8 @@ impl Doublet {
             .interface(a.name, b.name, sigma12)
             .interface(a.name, HOST.name, a.surface_tension_n_m)
             .interface(b.name, HOST.name, b.surface_tension_n_m)
-            .body("drop1", a.name, sphere(-R0_M))
-            .body("drop2", b.name, sphere(R0_M))
+            .body("drop1", a.name, drop_at(-R0_M))
+            .body("drop2", b.name, drop_at(R0_M))
             .body("host", HOST.name, BodyShape::Surrounding { min, max })
             .periodic_box(min, max)
             .build()
@@ -192,10 +188,6 @@ impl Doublet {
         };
         // c² = 150 m²/s² as in the paper (§2.3); the cohesive compression stays below 1 %
         // for matte down to l0 = 0.06 mm (σ/(l0 ρ c²) · 1.75 = 1.7 % at the paper's l0)
-        let sphere = |x: f64| BodyShape::Sphere {
-            center: [x, 0.0, 0.0],
-            radius: R0_M,
-        };
         let builder = SceneBuilder::new(l0, 150f64.sqrt())
             .time(self.end(f, sigma12), 1.0e-4)
             .fixed_dt((f == Fidelity::Paper).then_some(1.0e-6))
@@ -206,8 +198,8 @@ impl Doublet {
         match start {
             Start::Touching => {
                 builder
-                    .body("drop1", a.name, sphere(-R0_M))
-                    .body("drop2", b.name, sphere(R0_M))
+                    .body("drop1", a.name, drop_at(-R0_M))
+                    .body("drop2", b.name, drop_at(R0_M))
             }
             // one sphere of twice a drop's volume, its halves the two liquids
             Start::Merged => builder.cut_body(
@@ -224,10 +216,10 @@ impl Doublet {
             ),
             Start::Fine => {
                 builder
-                    .body("drop1", a.name, sphere(-R0_M))
-                    .body("drop2", b.name, sphere(R0_M))
+                    .body("drop1", a.name, drop_at(-R0_M))
+                    .body("drop2", b.name, drop_at(R0_M))
             }
-            Start::Engulfed => builder.body("core", a.name, sphere(0.0)).body(
+            Start::Engulfed => builder.body("core", a.name, drop_at(0.0)).body(
                 "shell",
                 b.name,
                 BodyShape::Shell {
@@ -272,6 +264,14 @@ const IN_HOST_END_S: f64 = 0.06;
 
 /// `h/l0` of the continuum models (the convergence case's drops in a host).
 const CONTINUUM_H_OVER_L0: f64 = 1.3;
+
+/// A drop of radius R0 centred at `x` [m] on the x axis.
+fn drop_at(x: f64) -> BodyShape {
+    BodyShape::Sphere {
+        center: [x, 0.0, 0.0],
+        radius: R0_M,
+    }
+}
 
 /// Volume of each drop [m³].
 fn drop_volume_m3() -> f64 {

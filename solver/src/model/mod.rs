@@ -56,6 +56,9 @@ pub struct Model {
     /// The tension [N/m] of each pair of phases for the continuum surface stress, row-major
     /// (empty without it; [`pairs::surface_stress_table`]).
     pub surface_stress_sigma: Vec<f64>,
+    /// The phase of the walls' solid where the walls take part in the continuum surface force
+    /// (its walls are all of one solid), else `None`.
+    pub surface_force_wall: Option<usize>,
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
     pub tension_scales: Vec<f64>,
@@ -178,6 +181,12 @@ impl Model {
         } else {
             Vec::new()
         };
+        let surface_force_wall = scene
+            .walls
+            .first()
+            .filter(|_| effects.continuum_tension == Some(ContinuumForm::Force))
+            .and_then(|w| scene.solid_index(&w.solid))
+            .map(|k| n_liquids + k);
         let interaction_radius_m =
             if effects.interfacial_tension || effects.continuum_tension.is_some() {
                 r_e
@@ -209,6 +218,7 @@ impl Model {
             mu_pair,
             pairs,
             surface_stress_sigma,
+            surface_force_wall,
             tension_scales: vec![1.0; n_liquids],
             pair_tension_scales: Vec::new(),
             lattice_kernel_sum,

@@ -36,9 +36,12 @@ pub fn fowkes_table(scene: &Scene, s_m3: f64) -> PairTable {
     PairTable::new(n, sigma_pair, scene.discretisation.l0, s_m3)
 }
 
-/// The tension of each pair of phases for the continuum surface stress [N/m], row-major: the
-/// scene's `[[interface]]` tension between two different liquids, zero otherwise (a liquid with
-/// itself, liquids that never meet, solids).
+/// The tension of each pair of phases for the continuum models [N/m], row-major: the scene's
+/// `[[interface]]` tension between two different liquids, zero for a liquid with itself and
+/// liquids that never meet. A liquid `a` against a solid `S` (the surface force's walls) has
+/// Young's `σ_aS = σ_S − σ_a cos θ_aS` up to the solid's own `σ_S`, which the surface force
+/// does not need (docs/model.md §4b): `−σ_a cos θ_aS`, with the liquid's surface tension and
+/// its contact angle on the solid (zero for a liquid without a surface tension: a gas).
 pub fn surface_stress_table(scene: &Scene) -> Vec<f64> {
     let nl = scene.liquids.len();
     let n = nl + scene.solids.len();
@@ -49,6 +52,18 @@ pub fn surface_stress_table(scene: &Scene) -> Vec<f64> {
                 let (na, nb) = (&scene.liquids[a].name, &scene.liquids[b].name);
                 sigma[a * n + b] = scene.interface_tension(na, nb).unwrap_or(0.0);
             }
+        }
+        let liquid = &scene.liquids[a];
+        for (k, solid) in scene.solids.iter().enumerate() {
+            let young = match (
+                liquid.surface_tension,
+                solid.contact_angles.get(&liquid.name),
+            ) {
+                (Some(s), Some(theta_deg)) => -s * theta_deg.to_radians().cos(),
+                _ => 0.0,
+            };
+            sigma[a * n + nl + k] = young;
+            sigma[(nl + k) * n + a] = young;
         }
     }
     sigma

@@ -163,6 +163,10 @@ pub struct NeighbourSearch {
     pub active: Vec<u64>,
     /// Number of builds so far.
     pub builds: u64,
+    /// Whether wall particles also list their fluid neighbours beyond the near cut-off, within
+    /// the far one, in their far part (the continuum surface force reads the colour gradient
+    /// at walls within `r_e`); off by default, when walls list only their near neighbours.
+    pub walls_reach_far: bool,
 }
 
 /// Bits of a particle's [`NeighbourSearch::active`] mask: its first `ACTIVE_BITS` near entries.
@@ -194,6 +198,7 @@ impl NeighbourSearch {
             clip_min_per_cell: clip::MIN_PARTICLES_PER_CELL,
             active: Vec::new(),
             builds: 0,
+            walls_reach_far: false,
         }
     }
 
@@ -340,7 +345,13 @@ impl NeighbourSearch {
                 }
             });
 
-        // wall particles: fluid neighbours within the kernel support (+ skin)
+        // wall particles: fluid neighbours within the kernel support (+ skin), and with
+        // `walls_reach_far` those within the far cut-off in their far part
+        let (wall_cut, wall_far2) = if self.walls_reach_far {
+            (far_cut, far2)
+        } else {
+            (near_cut, near2)
+        };
         wall_seg
             .par_iter_mut()
             .zip(wall_cnt.par_iter_mut())
@@ -349,32 +360,39 @@ impl NeighbourSearch {
                 list.clear();
                 counts.clear();
                 let mut fc = Rows::new(fk, ft);
-                let mut buf: Vec<u32> = Vec::new();
+                let (mut buf, mut far_buf): (Vec<u32>, Vec<u32>) = (Vec::new(), Vec::new());
                 for &(s, e) in runs {
                     let f_ranges = fc.ranges(wk[s]);
                     let candidates: usize = f_ranges.iter().map(|r| r.len()).sum();
                     if buf.len() < candidates {
                         buf.resize(candidates, 0);
+                        far_buf.resize(candidates, 0);
                     }
                     let f_cells = clip_walls.then(|| RowCells::new(fk, wk[s], &f_ranges));
                     for iw in s..e {
                         let f_ranges = match &f_cells {
                             Some(f_cells) => {
-                                let reach = clip::window(&pos[n_fluid + iw], inv_cell, near_cut);
+                                let reach = clip::window(&pos[n_fluid + iw], inv_cell, wall_cut);
                                 f_cells.clipped(&reach)
                             }
                             None => f_ranges.clone(),
                         };
-                        let (n, _) = scan::<false>(
-                            pos,
-                            n_fluid + iw,
-                            n_fluid,
-                            &f_ranges,
-                            &[],
-                            (near2, near2),
-                            (&mut buf, &mut []),
-                        );
-                        counts.push(push_list(list, n_fluid + iw, &buf[..n], &[]));
+                        let i = n_fluid + iw;
+                        let range = (near2, wall_far2);
+                        let (n, nf) = if wall_far2 > near2 {
+                            scan_wall(pos, i, &f_ranges, range, (&mut buf, &mut far_buf))
+                        } else {
+                            scan::<false>(
+                                pos,
+                                i,
+                                n_fluid,
+                                &f_ranges,
+                                &[],
+                                range,
+                                (&mut buf, &mut []),
+                            )
+                        };
+                        counts.push(push_list(list, i, &buf[..n], &far_buf[..nf]));
                     }
                 }
             });
@@ -479,6 +497,29 @@ fn scan<const FAR: bool>(
         for jw in r.clone() {
             test(n_fluid + jw);
         }
+    }
+    (nn, nf)
+}
+
+/// The fluid candidates `f_ranges` of wall particle `i` within the near cut-off and, beyond it,
+/// within the far one (squared, [m²]), written to the two buffers in candidate order; returns
+/// their counts ([`NeighbourSearch::walls_reach_far`]: a wall's far part holds fluid particles
+/// of lower index, so such a pair is in both particles' lists).
+fn scan_wall(
+    pos: &[Vec3],
+    i: usize,
+    f_ranges: &[std::ops::Range<usize>],
+    (near2, far2): (f64, f64),
+    (near_buf, far_buf): (&mut [u32], &mut [u32]),
+) -> (usize, usize) {
+    let pi = pos[i];
+    let (mut nn, mut nf) = (0usize, 0usize);
+    for j in f_ranges.iter().flat_map(|r| r.clone()) {
+        let d2 = (pi - pos[j]).norm_squared();
+        near_buf[nn] = j as u32;
+        nn += usize::from(d2 < near2);
+        far_buf[nf] = j as u32;
+        nf += usize::from((d2 < far2) & (d2 >= near2));
     }
     (nn, nf)
 }

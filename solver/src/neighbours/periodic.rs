@@ -137,6 +137,7 @@ impl NeighbourSearch {
     /// Builds the lists of [`NeighbourSearch::build`] in a box with periodic axes.
     pub(super) fn build_periodic(&mut self, pos: &[Vec3], n_fluid: usize) {
         let pbc = self.lists.periodic;
+        let walls_reach_far = self.walls_reach_far;
         let near_cut = self.near_radius_m + self.skin_m;
         let far_cut = self.far_radius_m + self.skin_m;
         let (near2, far2) = (near_cut * near_cut, far_cut * far_cut);
@@ -157,12 +158,14 @@ impl NeighbourSearch {
                 counts.clear();
                 let n_fluid_seg = n_fluid.div_ceil(SEGMENT);
                 // fluid particles list fluid and wall neighbours (near, then far); wall
-                // particles list fluid neighbours within the near cut-off
+                // particles list fluid neighbours within the near cut-off (with
+                // `walls_reach_far`, then those within the far one: of lower index)
                 let (first, last, far2_i) = if s < n_fluid_seg {
                     (s * SEGMENT, ((s + 1) * SEGMENT).min(n_fluid), far2)
                 } else {
                     let w = (s - n_fluid_seg) * SEGMENT;
-                    (n_fluid + w, (n_fluid + w + SEGMENT).min(pos.len()), near2)
+                    let far2_w = if walls_reach_far { far2 } else { near2 };
+                    (n_fluid + w, (n_fluid + w + SEGMENT).min(pos.len()), far2_w)
                 };
                 let (mut near, mut far) = (Vec::new(), Vec::new());
                 for i in first..last {
@@ -175,8 +178,9 @@ impl NeighbourSearch {
                         let d2 = pbc.delta(pos[i], pos[j]).norm_squared();
                         if d2 < near2 {
                             near.push(j as u32);
-                        } else if d2 < far2_i && j > i {
-                            // far pairs once: in the list of the lower index
+                        } else if d2 < far2_i && (j > i || i >= n_fluid) {
+                            // far pairs once: in the list of the lower index (a wall's far
+                            // part, if any, repeats its fluid pairs)
                             far.push(j as u32);
                         }
                     };

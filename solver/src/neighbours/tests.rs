@@ -34,6 +34,19 @@ fn check(n_fluid: usize, n_wall: usize, near: f64, far: f64, skin: f64, seed: u6
     check_in(PeriodicBox::OPEN, n_fluid, n_wall, (near, far, skin), seed);
 }
 
+/// [`check_in`], and the same points again with walls that reach the far cut-off.
+fn check_in(
+    periodic: PeriodicBox,
+    n_fluid: usize,
+    n_wall: usize,
+    radii: (f64, f64, f64),
+    seed: u64,
+) {
+    for walls_reach_far in [false, true] {
+        check_lists(periodic, n_fluid, n_wall, radii, seed, walls_reach_far);
+    }
+}
+
 /// All pairs `(i, j)`, `i ≠ j`, closer than `radius_m` under the minimum image of `b`.
 fn brute_force_pairs(b: &PeriodicBox, pos: &[Vec3], radius_m: f64) -> Vec<(u32, u32)> {
     let r2 = radius_m * radius_m;
@@ -48,18 +61,20 @@ fn brute_force_pairs(b: &PeriodicBox, pos: &[Vec3], radius_m: f64) -> Vec<(u32, 
     pairs
 }
 
-fn check_in(
+fn check_lists(
     periodic: PeriodicBox,
     n_fluid: usize,
     n_wall: usize,
     (near, far, skin): (f64, f64, f64),
     seed: u64,
+    walls_reach_far: bool,
 ) {
     let box_m = 1e-3;
     let mut fluid = random_points(n_fluid, box_m, -3e-4, seed);
     let mut walls = random_points(n_wall, box_m, -3e-4, seed + 7);
     let mut s = NeighbourSearch::new(near, far, skin);
     s.set_periodic(periodic);
+    s.walls_reach_far = walls_reach_far;
     let perm = s.sort_order(&fluid).unwrap();
     fluid = perm.iter().map(|&i| fluid[i as usize]).collect();
     let permw = s.sort_order(&walls).unwrap();
@@ -80,8 +95,20 @@ fn check_in(
         .into_iter()
         .filter(|&(i, j)| (i as usize) < n_fluid && (j > i || expected_near.contains(&(i, j))))
         .collect();
+    // with `walls_reach_far` a wall lists, beyond its near fluid neighbours, every fluid
+    // particle within the far cut-off
+    let expected_wall_far: BTreeSet<(u32, u32)> = brute_force_pairs(&periodic, &pos, far_cut)
+        .into_iter()
+        .filter(|&(i, j)| {
+            walls_reach_far
+                && (i as usize) >= n_fluid
+                && (j as usize) < n_fluid
+                && !expected_near.contains(&(i, j))
+        })
+        .collect();
     let mut got_near = BTreeSet::new();
     let mut got_all = BTreeSet::new();
+    let mut got_wall_far = BTreeSet::new();
     for i in 0..pos.len() {
         for j in s.lists.near(i) {
             assert!(got_near.insert((i as u32, j as u32)), "pair listed twice");
@@ -92,11 +119,13 @@ fn check_in(
             }
             assert!(s.lists.far(i).all(|j| j > i), "far pairs once");
         } else {
-            assert!(s.lists.far(i).is_empty(), "walls list no far neighbours");
-            assert!(
-                s.lists.near(i).all(|j| j < n_fluid),
-                "walls list fluid only"
-            );
+            for j in s.lists.far(i) {
+                assert!(
+                    got_wall_far.insert((i as u32, j as u32)),
+                    "pair listed twice"
+                );
+            }
+            assert!(s.lists.all(i).all(|j| j < n_fluid), "walls list fluid only");
         }
     }
     assert_eq!(
@@ -104,6 +133,10 @@ fn check_in(
         "near pairs differ from brute force"
     );
     assert_eq!(got_all, expected_all, "all pairs differ from brute force");
+    assert_eq!(
+        got_wall_far, expected_wall_far,
+        "walls' far pairs differ from brute force"
+    );
 }
 
 #[test]
@@ -184,15 +217,19 @@ fn clipped_and_whole_rows_give_identical_lists() {
     // clipping the rows to the cells within reach only skips candidates beyond the cut-off:
     // the lists must be the same entry for entry whichever way a scene's density selects
     let (fluid, walls) = fluid_and_walls(900, 500, 13);
-    let lists = |min_per_cell: usize| {
-        lists_of(&fluid, &walls, |s| {
-            s.clip_min_per_cell = min_per_cell;
-        })
-        .0
-    };
-    let clipped = lists(0);
-    assert_eq!(clipped, lists(usize::MAX));
-    assert!(clipped.iter().map(|l| l.1.len()).sum::<usize>() > 10_000);
+    // (walls clip their rows at the far cut-off when they reach it)
+    for walls_reach_far in [false, true] {
+        let lists = |min_per_cell: usize| {
+            lists_of(&fluid, &walls, |s| {
+                s.clip_min_per_cell = min_per_cell;
+                s.walls_reach_far = walls_reach_far;
+            })
+            .0
+        };
+        let clipped = lists(0);
+        assert_eq!(clipped, lists(usize::MAX));
+        assert!(clipped.iter().map(|l| l.1.len()).sum::<usize>() > 10_000);
+    }
 }
 
 #[test]

@@ -608,8 +608,9 @@ fn walls(s: &Scene) -> R {
 }
 
 /// With interfacial tension on, every pair of liquids present needs σ_ab; with the potential
-/// every liquid also needs σ, and a contact angle on every solid that a wall is made of. The
-/// surface stress acts between liquids only: it needs two of them and no walls (yet).
+/// every liquid also needs σ, and a contact angle on every solid that a wall is made of (with
+/// the surface force, every liquid that has a σ). The continuum models act between liquids
+/// only: they need two of them ([`continuum_inputs`]).
 fn tension_inputs(s: &Scene) -> R {
     let model = s.effects.interfacial_tension;
     if !model.is_on() {
@@ -652,7 +653,27 @@ fn tension_inputs(s: &Scene) -> R {
     for w in &s.walls {
         let solid = &s.solids[s.solid_index(&w.solid).expect("checked in walls()")];
         for l in &used {
-            if !solid.contact_angles.contains_key(*l) {
+            let has_sigma = s
+                .liquids
+                .iter()
+                .any(|x| x.name == *l && x.surface_tension.is_some());
+            let has_angle = solid.contact_angles.contains_key(*l);
+            if !has_sigma && has_angle && model == TensionModel::SurfaceForce {
+                // only the potential can reach here with a liquid without σ otherwise
+                return Err(SceneError::invalid(
+                    format!("solid[{}].contact_angles.{l}", solid.name),
+                    "given",
+                    format!(
+                        "liquid '{l}' has no surface tension, so its contact angle takes no \
+                         part in the surface force (Young: σ_lS = σ_S − σ_l cos θ): remove the \
+                         angle, or give liquid[{l}].surface_tension"
+                    ),
+                ));
+            }
+            if !has_sigma && model == TensionModel::SurfaceForce {
+                continue;
+            }
+            if !has_angle {
                 return Err(SceneError::invalid(
                     format!("solid[{}].contact_angles.{l}", solid.name),
                     "missing",
@@ -670,8 +691,9 @@ fn tension_inputs(s: &Scene) -> R {
 /// The continuum models' own limits (the surface stress and the surface force): they act
 /// across interfaces between liquid phases, so a scene needs at least two liquids in its
 /// bodies (a liquid's free surface against empty space carries no tension: the surrounding gas
-/// is declared as a liquid); contact angles on walls are not built for them yet; the surface
-/// force takes at most three liquids.
+/// is declared as a liquid). The surface force splits the tensions among at most three phases:
+/// three liquids, or two and the one solid its walls are made of. Contact angles on walls are
+/// not built for the surface stress.
 fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
     let name = match model {
         TensionModel::SurfaceForce => "surface_force",
@@ -698,14 +720,36 @@ fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
              the potential (true)",
         ));
     }
-    if let Some(w) = s.walls.first() {
+    let Some(first) = s.walls.first() else {
+        return Ok(());
+    };
+    if model != TensionModel::SurfaceForce {
         return Err(SceneError::invalid(
-            format!("wall[{}]", w.name),
+            format!("wall[{}]", first.name),
             "present",
             format!(
-                "contact angles are not built for effects.interfacial_tension = \"{name}\" \
-                 yet: use the potential (true) for scenes with walls"
+                "contact angles are not built for effects.interfacial_tension = \"{name}\": \
+                 use \"surface_force\" or the potential (true) for scenes with walls"
             ),
+        ));
+    }
+    if let Some(w) = s.walls.iter().find(|w| w.solid != first.solid) {
+        return Err(SceneError::invalid(
+            format!("wall[{}].solid", w.name),
+            &w.solid,
+            format!(
+                "the surface force's walls are one phase of its split of the tensions: make \
+                 every wall of one solid (wall[{}] is of '{}')",
+                first.name, first.solid
+            ),
+        ));
+    }
+    if liquids_used > 2 {
+        return Err(SceneError::invalid(
+            "effects.interfacial_tension",
+            format!("\"{name}\" with {liquids_used} liquids and walls"),
+            "the surface force splits the tensions among at most three phases, and the walls' \
+             solid is one of them: use at most two liquids with walls, or the potential (true)",
         ));
     }
     Ok(())

@@ -104,7 +104,8 @@ impl Simulation {
                 &self.surface_stress.force
             }
             ContinuumForm::Force => {
-                self.surface_force.evaluate(&inp, m.n_liquids, sigma);
+                self.surface_force
+                    .evaluate(&inp, m.n_liquids, sigma, m.surface_force_wall);
                 &self.surface_force.force
             }
         };

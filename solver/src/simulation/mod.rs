@@ -140,6 +140,8 @@ impl Simulation {
             model.neighbour_skin_m,
         );
         search.set_periodic(model.periodic);
+        // the surface force's colour gradient at walls reaches r_e from the wall side
+        search.walls_reach_far = model.surface_force_wall.is_some();
         let drho_next = if model.effects.continuity() {
             vec![0.0; particles.n_fluid]
         } else {

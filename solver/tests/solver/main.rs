@@ -18,6 +18,7 @@ mod lattice_energy;
 mod periodic;
 mod scene_errors;
 mod shifting;
+mod surface_force_walls;
 mod surface_stress;
 mod surrounding;
 mod tension_calibration;

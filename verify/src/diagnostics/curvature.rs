@@ -35,7 +35,12 @@ pub struct SphereCurvature {
 pub fn sphere(r_over_l0: f64, re_over_l0: f64, jitter_over_l0: f64) -> SphereCurvature {
     let cloud = SphereCloud::new(r_over_l0, re_over_l0, jitter_over_l0, |_| Vec3::zeros());
     let mut force = ForceScratch::default();
-    force.evaluate(&cloud.input(), 2, |a, b| if a != b { 1.0 } else { 0.0 });
+    force.evaluate(
+        &cloud.input(),
+        2,
+        |a, b| if a != b { 1.0 } else { 0.0 },
+        None,
+    );
     let (mut weight, mut m1, mut m2, mut inward) = (0.0, 0.0, 0.0, 0.0);
     for ((x, f), k) in cloud
         .reference

@@ -88,7 +88,7 @@ fn generalised_force(model: Continuum, r: f64, re: f64, jitter: f64, eps: f64, b
         Continuum::SurfaceForce => {
             let mut s = ForceScratch::default();
             s.band_gradient_times_r_e = band;
-            s.evaluate(&cloud.input(), 2, sigma);
+            s.evaluate(&cloud.input(), 2, sigma, None);
             s.force
         }
         Continuum::SurfaceStress => {

@@ -17,9 +17,15 @@
 //!   which `n` does not change), positive for a drop of `b` in `a`;
 //! - the force `F_i = V_i σ_ab κ_i g_i` [N].
 //!
+//! With walls, their solid is a third phase of the split (two liquids and one solid): each
+//! liquid's share comes from the tensions of its interfaces with the other liquid and with the
+//! solid, the latter from Young's relation with the liquid's contact angle, and the solid's own
+//! share is no term (a rigid wall's area does not change). Wall particles take part in the
+//! colour gradients, normals and curvatures of the liquids' terms; no force acts on them.
+//!
 //! Not a pair form: linear momentum is conserved only as far as `κ` is uniform on a closed
-//! interface. Both passes visit each pair once ([`each_pair_once`]): the bits do not depend on
-//! the thread count. Walls take no part.
+//! interface. The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
+//! gathers over each wall particle's list: the bits do not depend on the thread count.
 
 use super::surface_stress::StressInput;
 use crate::kernel::Kernel;
@@ -40,9 +46,10 @@ pub struct ForceScratch {
     /// The band's threshold on `|∇c| r_e` [-] ([`BAND_GRADIENT_TIMES_R_E`] by default; the
     /// diagnostics vary it).
     pub band_gradient_times_r_e: f64,
-    /// `∇c_b` per fluid particle [1/m] (zero off the phases `a` and `b`).
+    /// `∇c_b` per particle [1/m] (zero off the phases `a` and `b`; walls: zero unless they
+    /// take part).
     gradient: Vec<Vec3>,
-    /// The unit normal in the band (zero outside it) per fluid particle.
+    /// The unit normal in the band (zero outside it) per particle.
     normal: Vec<Vec3>,
     /// The curvature's sums `(numerator [1/m], denominator [-], 0)` per fluid particle.
     sums: Vec<Vec3>,
@@ -77,25 +84,30 @@ impl Default for ForceScratch {
 impl ForceScratch {
     /// Evaluates the forces of the current state: `sigma(a, b)` [N/m] is the tension of the
     /// pair of liquid phases `a ≠ b` (zero: no interface term), `n_liquids` the number of
-    /// liquid phases.
+    /// liquid phases; `wall`, if the walls take part, their solid's phase, with
+    /// `sigma(a, wall)` the liquid `a`'s tension against it relative to the solid's own
+    /// ([`interface_terms`]). Walls take part only with lists that reach the colour kernel's
+    /// support from the wall side ([`crate::neighbours::NeighbourSearch::walls_reach_far`]).
     pub fn evaluate<K: Kernel>(
         &mut self,
         inp: &StressInput<K>,
         n_liquids: usize,
         sigma: impl Fn(usize, usize) -> f64 + Sync,
+        wall: Option<usize>,
     ) {
         let n = inp.n_fluid;
-        self.gradient.resize(n, Vec3::zeros());
-        self.normal.resize(n, Vec3::zeros());
+        let n_all = if wall.is_some() { inp.pos.len() } else { n };
+        self.gradient.resize(n_all, Vec3::zeros());
+        self.normal.resize(n_all, Vec3::zeros());
         self.sums.resize(n, Vec3::zeros());
         self.curvature.clear();
         self.curvature.resize(n, 0.0);
         self.force.clear();
         self.force.resize(n, Vec3::zeros());
         self.energy.clear();
-        self.energy.resize(n, 0.0);
+        self.energy.resize(n_all, 0.0);
         let band = self.band_gradient_times_r_e / inp.kernel.support_m();
-        for (sides, s) in interface_terms(n_liquids, &sigma) {
+        for (sides, s) in interface_terms(n_liquids, &sigma, wall) {
             interface_gradient(inp, sides, &self.spills, &mut self.gradient);
             // the normal in the band
             self.normal
@@ -106,11 +118,17 @@ impl ForceScratch {
                     *nrm = if m > band { *g / m } else { Vec3::zeros() };
                 });
             curvature_sums(inp, &self.normal, &self.spills, &mut self.sums);
+            // the walls' share of the energy (their side of the liquid's faces on them)
+            self.energy[n..]
+                .par_iter_mut()
+                .zip(self.gradient[n..].par_iter())
+                .zip(inp.vol[n..n_all].par_iter())
+                .for_each(|((e, g), v)| *e += v * s * g.norm());
             let (grad, sums) = (&self.gradient, &self.sums);
             self.force
                 .par_iter_mut()
                 .zip(self.curvature.par_iter_mut())
-                .zip(self.energy.par_iter_mut())
+                .zip(self.energy[..n].par_iter_mut())
                 .enumerate()
                 .for_each(|(i, ((f, k), e))| {
                     let g = grad[i];
@@ -137,12 +155,12 @@ impl ForceScratch {
 pub enum Sides {
     /// Liquid `a` (side A) against liquid `b` (side B).
     Pair(u8, u8),
-    /// Liquid `k` (side A) against every other liquid (side B).
+    /// Liquid `k` (side A) against every other phase, liquid or wall (side B).
     Phase(u8),
 }
 
 impl Sides {
-    /// `+1` for a liquid phase on side A, `−1` on side B, `0` on neither.
+    /// `+1` for a phase on side A, `−1` on side B, `0` on neither.
     #[inline(always)]
     fn of(self, phase: u8) -> f64 {
         match self {
@@ -155,17 +173,22 @@ impl Sides {
 }
 
 /// The interface terms of the force with their tensions [N/m], given the tension
-/// `sigma(a, b)` [N/m] of each pair of the `n_liquids` liquid phases (zero: none).
+/// `sigma(a, b)` [N/m] of each pair of the `n_liquids` liquid phases (zero: none), and, if the
+/// walls take part, their solid's phase `wall` with `sigma(a, wall)` the liquid `a`'s tension
+/// against it up to a constant common to the liquids (Young: `σ_aS = σ_S − σ_a cos θ_a`).
 ///
-/// With one pair of liquids, that pair `a | b` and its `σ_ab`. With three liquids, each
-/// against the other two with its own share `σ_k = ½(σ_kl + σ_km − σ_lm)`, so that
-/// `σ_ab = σ_a + σ_b` on every interface (docs/model.md §4b): each liquid's interface is closed,
-/// and at a triple line the three terms meet as the tensions balance, where a pair's colour
-/// gradient would end at an open edge. Four or more liquids with tensions are refused by the
-/// scene's validation (the split is overdetermined); here they keep their pairs.
+/// With one pair of liquids and no wall, that pair `a | b` and its `σ_ab`. With three phases
+/// (three liquids, or two and the walls' solid), each liquid against the other two with its
+/// own share `σ_k = ½(σ_kl + σ_km − σ_lm)`, so that `σ_ab = σ_a + σ_b` on every interface
+/// (docs/model.md §4b): each liquid's interface is closed, and at a triple line the three terms
+/// meet as the tensions balance, where a pair's colour gradient would end at an open edge. The
+/// solid's share is no term (a rigid wall's area is fixed), so the constant in its tensions
+/// drops out. Four or more phases are refused by the scene's validation (the split is
+/// overdetermined); here they keep their pairs.
 pub fn interface_terms(
     n_liquids: usize,
     sigma: &impl Fn(usize, usize) -> f64,
+    wall: Option<usize>,
 ) -> Vec<(Sides, f64)> {
     let mut pairs = Vec::new();
     let mut liquids = Vec::new();
@@ -182,10 +205,11 @@ pub fn interface_terms(
             }
         }
     }
+    liquids.sort_unstable();
+    liquids.extend(wall);
     if liquids.len() != 3 {
         return pairs;
     }
-    liquids.sort_unstable();
     let [k, l, m] = [liquids[0], liquids[1], liquids[2]];
     let share = |k, l, m| 0.5 * (sigma(k, l) + sigma(k, m) - sigma(l, m));
     [
@@ -194,7 +218,7 @@ pub fn interface_terms(
         (m, share(m, k, l)),
     ]
     .into_iter()
-    .filter(|&(_, s)| s != 0.0)
+    .filter(|&(k, s)| s != 0.0 && Some(k) != wall)
     .map(|(k, s)| (Sides::Phase(k as u8), s))
     .collect()
 }
@@ -203,8 +227,10 @@ pub fn interface_terms(
 /// `out` (zero elsewhere), pointing from side A into side B, in one pass over the pairs across
 /// the interface: `∇c_B` on A's particles and `−∇c_A` on B's ([`StressInput::colour_gradient`]'s
 /// sums, here both at once). A pair `i, j` across adds `s V_j ∇_i W_c` to `i` and
-/// `s V_i ∇_i W_c` to `j`, with `s = +1` if `i` is on side A and `−1` if on side B. Walls are
-/// not visited.
+/// `s V_i ∇_i W_c` to `j`, with `s = +1` if `i` is on side A and `−1` if on side B. If `out`
+/// holds the walls too (they take part: side B of a liquid's term), a fluid particle's sum
+/// takes its wall neighbours, and each wall particle then gathers its own over its fluid
+/// neighbours.
 fn interface_gradient<K: Kernel>(
     inp: &StressInput<K>,
     sides: Sides,
@@ -213,26 +239,43 @@ fn interface_gradient<K: Kernel>(
 ) {
     out.fill(Vec3::zeros());
     let phase = inp.phase;
-    each_pair_once(out, spills, |i, reactions: &mut Reactions| {
+    let (fluid, walls) = out.split_at_mut(inp.n_fluid);
+    let with_walls = !walls.is_empty();
+    each_pair_once(fluid, spills, |i, reactions: &mut Reactions| {
         let mut g = Vec3::zeros();
         let sign = sides.of(phase[i]);
         if sign == 0.0 {
             return g;
         }
-        inp.each_later_neighbour(
-            i,
-            |j| sides.of(phase[j]) == -sign,
-            |j, grad_w, _| {
-                g += grad_w * (sign * inp.vol[j]);
-                reactions.subtract(j, grad_w * (-sign * inp.vol[i]));
-            },
-        );
+        let across = |j: usize| sides.of(phase[j]) == -sign;
+        let mut add = |j: usize, grad_w: Vec3, _| {
+            g += grad_w * (sign * inp.vol[j]);
+            reactions.subtract(j, grad_w * (-sign * inp.vol[i]));
+        };
+        if with_walls {
+            inp.each_later_neighbour_or_wall(i, across, &mut add);
+        } else {
+            inp.each_later_neighbour(i, across, &mut add);
+        }
         g
+    });
+    walls.par_iter_mut().enumerate().for_each(|(k, g)| {
+        let w = inp.n_fluid + k;
+        let sign = sides.of(phase[w]);
+        if sign == 0.0 {
+            return;
+        }
+        inp.each_fluid_neighbour_of_wall(
+            w,
+            |j| sides.of(phase[j]) == -sign,
+            |j, grad_w| *g += grad_w * (sign * inp.vol[j]),
+        );
     });
 }
 
 /// The curvature's sums `(Σ_j V_j (n_j − n_i)·∇_i W_c, Σ_j V_j ½(r² − (n_i·r)²)|W_c'|/r, 0)`
-/// over pairs of band particles (nonzero `normal`), into `out`.
+/// over pairs of band particles (nonzero `normal`), into `out` (one per fluid particle); wall
+/// particles in the band (if `normal` holds them) count as neighbours of fluid ones.
 fn curvature_sums<K: Kernel>(
     inp: &StressInput<K>,
     normal: &[Vec3],
@@ -240,14 +283,15 @@ fn curvature_sums<K: Kernel>(
     out: &mut [Vec3],
 ) {
     out.fill(Vec3::zeros());
-    let in_band = |j: usize| normal[j] != Vec3::zeros();
+    let in_band = |j: usize| j < normal.len() && normal[j] != Vec3::zeros();
+    let with_walls = normal.len() > inp.n_fluid;
     each_pair_once(out, spills, |i, reactions: &mut Reactions| {
         let ni = normal[i];
         let mut sum = Vec3::zeros();
         if ni == Vec3::zeros() {
             return sum;
         }
-        inp.each_later_neighbour(i, in_band, |j, grad_w, d| {
+        let mut add = |j: usize, grad_w: Vec3, d: Vec3| {
             let nj = normal[j];
             // grad_w = ∇_i W_c = r_ij W'/r, with d = r_ij = x_i − x_j
             let div = (nj - ni).dot(&grad_w);
@@ -256,12 +300,20 @@ fn curvature_sums<K: Kernel>(
             let ti = 0.5 * (r2 - ni.dot(&d).powi(2)) * abs_dw_over_r;
             let tj = 0.5 * (r2 - nj.dot(&d).powi(2)) * abs_dw_over_r;
             sum += Vec3::new(inp.vol[j] * div, inp.vol[j] * ti, 0.0);
-            // j's sums: (n_i − n_j)·∇_j W_c = (n_j − n_i)·∇_i W_c
+            // j's sums: (n_i − n_j)·∇_j W_c = (n_j − n_i)·∇_i W_c (a wall takes none)
             reactions.subtract(j, -Vec3::new(inp.vol[i] * div, inp.vol[i] * tj, 0.0));
-        });
+        };
+        if with_walls {
+            inp.each_later_neighbour_or_wall(i, in_band, &mut add);
+        } else {
+            inp.each_later_neighbour(i, in_band, &mut add);
+        }
         sum
     });
 }
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod wall_tests;

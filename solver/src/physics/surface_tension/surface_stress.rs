@@ -100,6 +100,58 @@ impl<K: Kernel> StressInput<'_, K> {
         }
     }
 
+    /// [`StressInput::each_later_neighbour`] with wall particles too (`j ≥ n_fluid`: every wall
+    /// neighbour of a fluid particle is later).
+    #[inline(always)]
+    pub(super) fn each_later_neighbour_or_wall(
+        &self,
+        i: usize,
+        wanted: impl Fn(usize) -> bool,
+        mut pair: impl FnMut(usize, Vec3, Vec3),
+    ) {
+        let cut2 = self.kernel.support_m().powi(2);
+        let pi = self.pos[i];
+        let later = self.lists.near(i).filter(|&j| j > i);
+        for j in later.chain(self.lists.far(i)) {
+            if !wanted(j) {
+                continue;
+            }
+            let d = self.lists.delta(pi, self.pos[j]);
+            let r2 = d.norm_squared();
+            if r2 >= cut2 || r2 == 0.0 {
+                continue;
+            }
+            let r = r2.sqrt();
+            pair(j, d * (self.kernel.dw_dr(r) / r), d);
+        }
+    }
+
+    /// Calls `pair(j, ∇_w W_c(r_wj) [1/m⁴])` for every fluid neighbour `j` of wall particle `w`
+    /// within the colour kernel's support for which `wanted(j)`, in list order (near, then
+    /// far: complete only with [`crate::neighbours::NeighbourSearch::walls_reach_far`]).
+    #[inline(always)]
+    pub(super) fn each_fluid_neighbour_of_wall(
+        &self,
+        w: usize,
+        wanted: impl Fn(usize) -> bool,
+        mut pair: impl FnMut(usize, Vec3),
+    ) {
+        let cut2 = self.kernel.support_m().powi(2);
+        let pw = self.pos[w];
+        for j in self.lists.all(w) {
+            if !wanted(j) {
+                continue;
+            }
+            let d = self.lists.delta(pw, self.pos[j]);
+            let r2 = d.norm_squared();
+            if r2 >= cut2 || r2 == 0.0 {
+                continue;
+            }
+            let r = r2.sqrt();
+            pair(j, d * (self.kernel.dw_dr(r) / r));
+        }
+    }
+
     /// The colour gradient of phase `b` [1/m] at every fluid particle not of phase `b` (zero
     /// for those of `b`), into `out`.
     pub fn colour_gradient(&self, b: u8, spills: &Spills, out: &mut [Vec3]) {

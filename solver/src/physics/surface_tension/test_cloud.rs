@@ -22,6 +22,8 @@ pub struct Cloud {
     pub phase: Vec<u8>,
     pub vol: Vec<f64>,
     pub search: NeighbourSearch,
+    /// The fluid particles come first; walls after.
+    pub n_fluid: usize,
 }
 
 impl Cloud {
@@ -32,7 +34,7 @@ impl Cloud {
             pos: &self.pos,
             vol: &self.vol,
             phase: &self.phase,
-            n_fluid: self.pos.len(),
+            n_fluid: self.n_fluid,
             lists: &self.search.lists,
         }
     }
@@ -41,18 +43,41 @@ impl Cloud {
 /// The cloud of `pos`, phase `phase_of(x)`, volume `l0³` each, sorted by cell, with lists built
 /// (periodic along the axes in `periodic`).
 pub fn cloud(pos: Vec<Vec3>, phase_of: impl Fn(Vec3) -> u8, periodic: PeriodicBox) -> Cloud {
+    cloud_with_walls(pos, phase_of, Vec::new(), 0, periodic)
+}
+
+/// [`cloud`] with wall particles at `walls` of phase `wall_phase` after the fluid (each part
+/// sorted by cell), their lists reaching the colour kernel's support.
+pub fn cloud_with_walls(
+    fluid: Vec<Vec3>,
+    phase_of: impl Fn(Vec3) -> u8,
+    walls: Vec<Vec3>,
+    wall_phase: u8,
+    periodic: PeriodicBox,
+) -> Cloud {
     let mut search = NeighbourSearch::new(1.05 * L0 * 2.0, R_E, 0.3 * L0);
     search.set_periodic(periodic);
-    let perm = search.sort_order(&pos).unwrap();
-    let pos: Vec<Vec3> = perm.iter().map(|&i| pos[i as usize]).collect();
-    search.build(&pos, pos.len()).unwrap();
-    let phase = pos.iter().map(|&x| phase_of(x)).collect();
+    search.walls_reach_far = true;
+    let sorted = |x: &[Vec3]| -> Vec<Vec3> {
+        let perm = search.sort_order(x).unwrap();
+        perm.iter().map(|&i| x[i as usize]).collect()
+    };
+    let n_fluid = fluid.len();
+    let mut pos = sorted(&fluid);
+    pos.extend(sorted(&walls));
+    search.build(&pos, n_fluid).unwrap();
+    let phase = pos
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| if i < n_fluid { phase_of(x) } else { wall_phase })
+        .collect();
     let vol = vec![L0 * L0 * L0; pos.len()];
     Cloud {
         pos,
         phase,
         vol,
         search,
+        n_fluid,
     }
 }
 

@@ -10,7 +10,7 @@ use crate::physics::surface_tension::test_cloud::{
 
 fn evaluate(c: &Cloud) -> ForceScratch {
     let mut s = ForceScratch::default();
-    s.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 });
+    s.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 }, None);
     s
 }
 
@@ -114,10 +114,10 @@ fn three(s01: f64, s02: f64, s12: f64) -> impl Fn(usize, usize) -> f64 {
 #[test]
 fn three_liquids_split_each_pairs_tension_into_the_liquids_shares() {
     // one pair with a tension (a third liquid declared without any): that pair as it is
-    let one = interface_terms(3, &|a, b| if a + b == 1 { 0.3 } else { 0.0 });
+    let one = interface_terms(3, &|a, b| if a + b == 1 { 0.3 } else { 0.0 }, None);
     assert_eq!(one, vec![(Sides::Pair(0, 1), 0.3)]);
     // three: σ_a + σ_b = σ_ab on every interface, exactly for these binary fractions
-    let terms = interface_terms(3, &three(0.5, 0.75, 0.625));
+    let terms = interface_terms(3, &three(0.5, 0.75, 0.625), None);
     let share = |k: u8| {
         terms
             .iter()
@@ -129,7 +129,7 @@ fn three_liquids_split_each_pairs_tension_into_the_liquids_shares() {
     assert_eq!(share(0) + share(2), 0.75);
     assert_eq!(share(1) + share(2), 0.625);
     // a share of zero is no term: σ12 = σ01 + σ02 leaves liquid 0 none
-    let terms = interface_terms(3, &three(0.25, 0.5, 0.75));
+    let terms = interface_terms(3, &three(0.25, 0.5, 0.75), None);
     assert!(terms.iter().all(|t| t.0 != Sides::Phase(0)), "{terms:?}");
 }
 
@@ -145,9 +145,9 @@ fn the_liquids_shares_give_the_pairs_force_where_two_liquids_meet() {
         PeriodicBox::OPEN,
     );
     let mut pair = ForceScratch::default();
-    pair.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 });
+    pair.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 }, None);
     let mut shares = ForceScratch::default();
-    shares.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA));
+    shares.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA), None);
     let scale = pair.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
     assert!(scale > 0.0);
     let worst = pair
@@ -171,7 +171,7 @@ fn three_flat_layers_have_no_curvature_and_no_force() {
     ]);
     let c = cloud(lattice([10, 10, 30]), |x| (x.z / (10.0 * L0)) as u8, b);
     let mut s = ForceScratch::default();
-    s.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA));
+    s.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA), None);
     // as the two-liquid flat test: every normal is ±z up to its lattice sum's round-off
     let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
     assert!(force_max < 1e-12 * SIGMA * L0, "{force_max:e} N");

@@ -473,7 +473,7 @@ pub(crate) fn measure_run(dir: &Path) -> anyhow::Result<i32> {
     if let Some(last) = m.rows.last() {
         eprintln!(
             "measured {} snapshots: at t = {:.4e} s height {:.4} mm, wetted radius {:.4} mm, angle {:.1}°",
-            m.rows.len() / m.liquids.len().max(1),
+            m.rows.iter().filter(|r| r.liquid == last.liquid).count(),
             last.time_s,
             last.height_m * 1e3,
             last.wetted_radius_m * 1e3,

@@ -1,7 +1,6 @@
 //! Checks of a resolved scene before its first step: inputs no real liquid or solid has (a unit
-//! slipped: 72.8 typed for σ in N/m), bodies too coarse or too thin for the potential, a
-//! sound speed the scene's cohesion or flow cannot live with, and walls the surface force's
-//! contact lines would pull the liquid off.
+//! slipped: 72.8 typed for σ in N/m), bodies too coarse or too thin for the potential, and a
+//! sound speed the scene's cohesion or flow cannot live with.
 //!
 //! Each [`Finding`] says what was found, the likely cause, and the value that would fix it.
 //! They are warnings: a run prints them on stderr and records them in `run_info.json`;
@@ -12,7 +11,6 @@
 mod inputs;
 mod resolution;
 mod sound;
-mod walls;
 
 pub use sound::{step_estimate, StepEstimate};
 
@@ -41,8 +39,6 @@ pub enum Check {
     CohesiveSoundSpeed,
     /// A sound speed below ten times the fastest speed the scene implies.
     FlowSoundSpeed,
-    /// Walls under the surface force with the pressure's negative part clipped.
-    WallHold,
 }
 
 impl Check {
@@ -58,7 +54,6 @@ impl Check {
             Check::Film => "film",
             Check::CohesiveSoundSpeed => "sound speed (cohesion)",
             Check::FlowSoundSpeed => "sound speed (flow)",
-            Check::WallHold => "wall hold",
         }
     }
 }
@@ -97,7 +92,6 @@ pub fn check(scene: &Scene) -> Vec<Finding> {
     let mut out = inputs::findings(scene);
     out.extend(resolution::findings(scene));
     out.extend(sound::findings(scene));
-    out.extend(walls::findings(scene));
     out
 }
 

@@ -3,7 +3,9 @@
 //! side-view contact angle with its error bound, the l = 2 and l = 4 shape moments and the
 //! centroid → `measures.csv` and two plots, with the Young–Laplace equilibrium drawn in where one
 //! liquid rests on one horizontal wall. The snapshots are the run's `.vtu` series (`run --vtk N`).
-//! The same functions of [`crate::measure`] as the cases use.
+//! The same functions of [`crate::measure`] as the cases use. Under a continuum tension model a
+//! liquid declared without a surface tension is the gas around the others: it is left out of
+//! the measures, and the others' surfaces against it are their free surfaces.
 
 mod draw;
 
@@ -86,20 +88,25 @@ pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
     };
     let z_w = wall_top(scene);
     let n_liquids = scene.liquids.len();
+    let gas = gases(scene);
     let mut rows = Vec::new();
     for (t, file) in read_pvd(&pvd).map_err(anyhow::Error::msg)? {
         let s = read_vtu(&dir.join(&file)).map_err(anyhow::Error::msg)?;
+        // the gas's particles are left out: the liquids' surfaces against it are free
+        let kept: Vec<usize> = (0..s.pos.len())
+            .filter(|&i| !gas[s.phase[i] as usize])
+            .collect();
         let cloud = Cloud {
-            pos: s.pos.clone(),
-            phase: s.phase.iter().map(|&p| p as u8).collect(),
+            pos: kept.iter().map(|&i| s.pos[i]).collect(),
+            phase: kept.iter().map(|&i| s.phase[i] as u8).collect(),
             walls: walls.clone(),
             l0_m: l0,
         };
         let classes = surface::classify(&cloud);
-        for k in 0..n_liquids {
-            let pts: Vec<[f64; 3]> = (0..s.pos.len())
-                .filter(|&i| s.phase[i] == k as i32)
-                .map(|i| s.pos[i])
+        for k in (0..n_liquids).filter(|&k| !gas[k]) {
+            let pts: Vec<[f64; 3]> = (0..cloud.pos.len())
+                .filter(|&i| cloud.phase[i] == k as u8)
+                .map(|i| cloud.pos[i])
                 .collect();
             rows.push(row(t, k, &pts, &cloud, &classes, z_w));
         }
@@ -180,13 +187,41 @@ fn spreading_rates(rows: &mut [Row], n_liquids: usize) {
     }
 }
 
-/// The Young–Laplace drop of one liquid of `particles` particles on the scene's only wall.
+/// Per liquid: whether it is the gas around the others, a liquid without a surface tension
+/// under a continuum tension model (docs/model.md §4b).
+fn gases(scene: &solver::Scene) -> Vec<bool> {
+    let continuum = scene.effects.interfacial_tension.is_continuum();
+    scene
+        .liquids
+        .iter()
+        .map(|l| continuum && l.surface_tension.is_none())
+        .collect()
+}
+
+/// The Young–Laplace drop of one liquid of `particles` particles on the scene's only wall: in
+/// empty space, or in one gas (docs/model.md §4b), where the tension is the pair's, the
+/// density the difference, and the angle Eq. 23's with the gas's σ zero:
+/// `cos θ = σ cos θ_S / σ_ag`.
 fn equilibrium(scene: &solver::Scene, particles: usize) -> Option<(f64, f64, f64)> {
     wall_top(scene)?;
-    let ([liquid], [solid]) = (scene.liquids.as_slice(), scene.solids.as_slice()) else {
+    let gas = gases(scene);
+    let (liquids, gases): (Vec<_>, Vec<_>) = scene.liquids.iter().zip(&gas).partition(|p| !*p.1);
+    let ([(liquid, _)], [solid]) = (liquids.as_slice(), scene.solids.as_slice()) else {
         return None;
     };
-    let theta = *solid.contact_angles.get(&liquid.name)?;
+    let typed = *solid.contact_angles.get(&liquid.name)?;
+    let (theta, sigma, density) = match gases.as_slice() {
+        [] => (typed, liquid.surface_tension?, liquid.density),
+        [(g, _)] => {
+            let s = scene.interface_tension(&liquid.name, &g.name)?;
+            let cos = liquid.surface_tension? * typed.to_radians().cos() / s;
+            (cos.acos().to_degrees(), s, liquid.density - g.density)
+        }
+        _ => return None,
+    };
+    if !theta.is_finite() {
+        return None; // |cos θ| > 1: no equilibrium angle
+    }
     let g = match scene.effects.gravity {
         Some([gx, gy, gz]) if gx == 0.0 && gy == 0.0 && gz <= 0.0 => -gz,
         Some(_) => return None, // tilted: not an axisymmetric drop
@@ -194,8 +229,13 @@ fn equilibrium(scene: &solver::Scene, particles: usize) -> Option<(f64, f64, f64
     };
     let l0 = scene.discretisation.l0;
     let volume = particles as f64 * l0 * l0 * l0;
-    let d = young_laplace::sessile_drop(volume, liquid.density, liquid.surface_tension?, theta, g)
-        .ok()?;
+    // a gas as dense as the liquid takes its weight: the drop is as in zero gravity
+    let (density, g) = match density > 0.0 {
+        true => (density, g),
+        false if density == 0.0 || g == 0.0 => (liquid.density, 0.0),
+        false => return None, // the liquid would float
+    };
+    let d = young_laplace::sessile_drop(volume, density, sigma, theta, g).ok()?;
     Some((d.height_m, d.contact_radius_m, theta))
 }
 
@@ -234,4 +274,77 @@ pub fn write(dir: &Path) -> anyhow::Result<Measures> {
     crate::output::atomic_write(&dir.join("measures.csv"), m.csv().as_bytes())?;
     draw::plots(&m, dir)?;
     Ok(m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A matte hemisphere on a plate in a gas (no surface tension) under the surface force,
+    /// with the pair's tension `sigma_ag` [N/m].
+    fn cap_in_gas(sigma_ag: f64) -> solver::Scene {
+        solver::Scene::from_toml_str(&format!(
+            r#"
+            [discretisation]
+            l0 = 1e-4
+            h_over_l0 = 1.3
+            sound_speed = 5.0
+            [time]
+            end = 1e-3
+            output_interval = 1e-4
+            [effects]
+            interfacial_tension = "surface_force"
+            [[liquid]]
+            name = "matte"
+            density = 4500.0
+            viscosity = 3e-3
+            surface_tension = 0.4
+            [[liquid]]
+            name = "gas"
+            density = 4500.0
+            viscosity = 3e-3
+            [[interface]]
+            liquids = ["matte", "gas"]
+            tension = {sigma_ag}
+            [[solid]]
+            name = "plate"
+            contact_angles = {{ matte = 60.0 }}
+            [[body]]
+            name = "cap"
+            liquid = "matte"
+            shape = {{ kind = "hemisphere", center = [0.0, 0.0, 0.0], radius = 1e-3, pole = [0.0, 0.0, 1.0] }}
+            [[body]]
+            name = "gas"
+            liquid = "gas"
+            shape = {{ kind = "surrounding", min = [-2e-3, -2e-3, 0.0], max = [2e-3, 2e-3, 2e-3] }}
+            [[wall]]
+            name = "plate"
+            solid = "plate"
+            shape = {{ kind = "plate", min = [-2e-3, -2e-3], max = [2e-3, 2e-3], top = 0.0 }}
+            "#
+        ))
+        .unwrap()
+    }
+
+    #[test]
+    fn a_liquid_in_a_declared_gas_has_the_equilibrium_of_eq_23() {
+        assert_eq!(gases(&cap_in_gas(0.4)), vec![false, true]);
+        // the hemisphere's volume, 2/3 π R³, in particles of l0 = 0.1 mm
+        let n = (2.0 / 3.0 * std::f64::consts::PI * 1e-9 / 1e-12).round() as usize;
+        // σ_ag = σ: the typed angle; 2σ: cos θ = cos 60°/2
+        let (_, _, theta) = equilibrium(&cap_in_gas(0.4), n).unwrap();
+        assert!((theta - 60.0).abs() < 1e-9, "{theta}");
+        let (h, _, theta) = equilibrium(&cap_in_gas(0.8), n).unwrap();
+        assert!(
+            (theta - 0.25f64.acos().to_degrees()).abs() < 1e-9,
+            "{theta}"
+        );
+        // zero gravity: the spherical cap of that volume and angle
+        let cap = young_laplace::spherical_cap(n as f64 * 1e-12, theta);
+        assert!(
+            (h / cap.height_m - 1.0).abs() < 1e-6,
+            "{h} {}",
+            cap.height_m
+        );
+    }
 }

@@ -59,6 +59,11 @@ fn example_scenes_trip_only_the_listed_checks() {
             "paper's c²",
         ),
         (
+            "cap_in_host.toml",
+            &[Resolution],
+            "the surface force's cap at R/l0 = 11, as measured in docs/findings.md",
+        ),
+        (
             "cube_drop.toml",
             &[CohesiveSoundSpeed, FlowSoundSpeed],
             "paper's c² (Table A-1 sweeps it)",

@@ -80,24 +80,9 @@ impl<K: Kernel> StressInput<'_, K> {
         &self,
         i: usize,
         wanted: impl Fn(usize) -> bool,
-        mut pair: impl FnMut(usize, Vec3, Vec3),
+        pair: impl FnMut(usize, Vec3, Vec3),
     ) {
-        let cut = self.kernel.support_m();
-        let cut2 = cut * cut;
-        let pi = self.pos[i];
-        let later = self.lists.near(i).filter(|&j| j > i);
-        for j in later.chain(self.lists.far(i)) {
-            if j >= self.n_fluid || !wanted(j) {
-                continue;
-            }
-            let d = self.lists.delta(pi, self.pos[j]);
-            let r2 = d.norm_squared();
-            if r2 >= cut2 || r2 == 0.0 {
-                continue;
-            }
-            let r = r2.sqrt();
-            pair(j, d * (self.kernel.dw_dr(r) / r), d);
-        }
+        self.later_neighbours::<false>(i, wanted, pair);
     }
 
     /// [`StressInput::each_later_neighbour`] with wall particles too (`j ≥ n_fluid`: every wall
@@ -107,13 +92,25 @@ impl<K: Kernel> StressInput<'_, K> {
         &self,
         i: usize,
         wanted: impl Fn(usize) -> bool,
+        pair: impl FnMut(usize, Vec3, Vec3),
+    ) {
+        self.later_neighbours::<true>(i, wanted, pair);
+    }
+
+    /// The two above: walls visited if `WALLS`.
+    #[inline(always)]
+    fn later_neighbours<const WALLS: bool>(
+        &self,
+        i: usize,
+        wanted: impl Fn(usize) -> bool,
         mut pair: impl FnMut(usize, Vec3, Vec3),
     ) {
-        let cut2 = self.kernel.support_m().powi(2);
+        let cut = self.kernel.support_m();
+        let cut2 = cut * cut;
         let pi = self.pos[i];
         let later = self.lists.near(i).filter(|&j| j > i);
         for j in later.chain(self.lists.far(i)) {
-            if !wanted(j) {
+            if (!WALLS && j >= self.n_fluid) || !wanted(j) {
                 continue;
             }
             let d = self.lists.delta(pi, self.pos[j]);
@@ -136,7 +133,8 @@ impl<K: Kernel> StressInput<'_, K> {
         wanted: impl Fn(usize) -> bool,
         mut pair: impl FnMut(usize, Vec3),
     ) {
-        let cut2 = self.kernel.support_m().powi(2);
+        let cut = self.kernel.support_m();
+        let cut2 = cut * cut;
         let pw = self.pos[w];
         for j in self.lists.all(w) {
             if !wanted(j) {

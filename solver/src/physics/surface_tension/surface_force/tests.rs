@@ -86,10 +86,10 @@ fn a_sphere_of_either_phase_is_pulled_inward_by_its_laplace_jump() {
     assert!((fine - 1.0).abs() < (coarse - 1.0).abs(), "{coarse} {fine}");
 }
 
-#[test]
-fn the_same_bits_for_any_thread_count() {
-    let c = small_sphere();
-    let run = |threads| on_threads(threads, || evaluate(&c));
+/// Asserts that `evaluate` gives the same forces, curvatures and energy bits on 1, 2 and 3
+/// threads.
+pub(super) fn assert_same_bits_for_any_thread_count(evaluate: impl Fn() -> ForceScratch + Sync) {
+    let run = |threads| on_threads(threads, &evaluate);
     let one = run(1);
     for threads in [2, 3] {
         let other = run(threads);
@@ -99,6 +99,12 @@ fn the_same_bits_for_any_thread_count() {
             other.interface_energy_j.to_bits()
         );
     }
+}
+
+#[test]
+fn the_same_bits_for_any_thread_count() {
+    let c = small_sphere();
+    assert_same_bits_for_any_thread_count(|| evaluate(&c));
 }
 
 /// Tensions [N/m] of three liquids: 0|1, 0|2 and 1|2.

@@ -6,7 +6,7 @@
 use super::*;
 use crate::periodic::PeriodicBox;
 use crate::physics::surface_tension::test_cloud::{
-    cloud_with_walls, lattice, lattice_moment, on_threads, Cloud, L0, SIGMA,
+    cloud_with_walls, lattice, lattice_moment, Cloud, L0, SIGMA,
 };
 
 /// Phases: the liquid 0 (surface tension `SIGMA`), a gas 1 without one, the walls' solid 2.
@@ -143,14 +143,5 @@ fn a_contact_line_off_its_angle_is_pushed_along_the_wall_as_young_says() {
 #[test]
 fn with_walls_the_same_bits_for_any_thread_count() {
     let (_, _, c) = channel(60.0);
-    let run = |threads| on_threads(threads, || evaluate(&c, 60.0));
-    let one = run(1);
-    for threads in [2, 3] {
-        let other = run(threads);
-        assert!(one.force == other.force && one.curvature == other.curvature);
-        assert_eq!(
-            one.interface_energy_j.to_bits(),
-            other.interface_energy_j.to_bits()
-        );
-    }
+    super::tests::assert_same_bits_for_any_thread_count(|| evaluate(&c, 60.0));
 }

@@ -14,6 +14,7 @@ use crate::lattice;
 use crate::periodic::PeriodicBox;
 use crate::physics::eos::TaitEos;
 use crate::physics::forces::wall_repulsion as repulsion;
+use crate::physics::surface_tension::surface_force::contact_line;
 use crate::physics::surface_tension::{Kondo2007Potential, PairTable};
 use crate::scene::{Health, ParticleMass, Scene, SceneError, TimeControl};
 use crate::state::Vec3;
@@ -59,6 +60,11 @@ pub struct Model {
     /// The phase of the walls' solid where the walls take part in the continuum surface force
     /// (its walls are all of one solid), else `None`.
     pub surface_force_wall: Option<usize>,
+    /// The factor on the liquid–solid tensions of the surface force at walls [-]: one over the
+    /// share of Young's push the force hands to the liquid on the lattice
+    /// ([`contact_line::young_share`]; 1.117 with Wendland C2 at `r_e = 4.2 l0`), 1 where the
+    /// walls take no part.
+    pub contact_line_factor: f64,
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
     pub tension_scales: Vec<f64>,
@@ -176,17 +182,29 @@ impl Model {
             })
             .collect();
         let support_m = scene.kernel_support();
-        let surface_stress_sigma = if effects.continuum_tension.is_some() {
-            pairs::surface_stress_table(scene)
-        } else {
-            Vec::new()
-        };
         let surface_force_wall = scene
             .walls
             .first()
             .filter(|_| effects.continuum_tension == Some(ContinuumForm::Force))
             .and_then(|w| scene.solid_index(&w.solid))
             .map(|k| n_liquids + k);
+        // the share of Young's push the force hands to the liquid at a wall, measured on the
+        // lattice channel with the run's colour kernel (support r_e; docs/model.md §4b)
+        let contact_line_factor = match surface_force_wall {
+            Some(_) => {
+                let share = with_kernel!(d.kernel, K => {
+                    let colour = K::new(r_e / K::new(1.0).support_m());
+                    contact_line::young_share(colour, l0)
+                });
+                1.0 / share
+            }
+            None => 1.0,
+        };
+        let surface_stress_sigma = if effects.continuum_tension.is_some() {
+            pairs::surface_stress_table(scene, contact_line_factor)
+        } else {
+            Vec::new()
+        };
         let interaction_radius_m =
             if effects.interfacial_tension || effects.continuum_tension.is_some() {
                 r_e
@@ -219,6 +237,7 @@ impl Model {
             pairs,
             surface_stress_sigma,
             surface_force_wall,
+            contact_line_factor,
             tension_scales: vec![1.0; n_liquids],
             pair_tension_scales: Vec::new(),
             lattice_kernel_sum,

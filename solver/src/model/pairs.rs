@@ -41,8 +41,10 @@ pub fn fowkes_table(scene: &Scene, s_m3: f64) -> PairTable {
 /// liquids that never meet. A liquid `a` against a solid `S` (the surface force's walls) has
 /// Young's `σ_aS = σ_S − σ_a cos θ_aS` up to the solid's own `σ_S`, which the surface force
 /// does not need (docs/model.md §4b): `−σ_a cos θ_aS`, with the liquid's surface tension and
-/// its contact angle on the solid (zero for a liquid without a surface tension: a gas).
-pub fn surface_stress_table(scene: &Scene) -> Vec<f64> {
+/// its contact angle on the solid (zero for a liquid without a surface tension: a gas), times
+/// `contact_line_factor` [-], the surface force's calibration at walls
+/// ([`crate::physics::surface_tension::surface_force::contact_line`]).
+pub fn surface_stress_table(scene: &Scene, contact_line_factor: f64) -> Vec<f64> {
     let nl = scene.liquids.len();
     let n = nl + scene.solids.len();
     let mut sigma = vec![0.0; n * n];
@@ -59,7 +61,9 @@ pub fn surface_stress_table(scene: &Scene) -> Vec<f64> {
                 liquid.surface_tension,
                 solid.contact_angles.get(&liquid.name),
             ) {
-                (Some(s), Some(theta_deg)) => -s * theta_deg.to_radians().cos(),
+                (Some(s), Some(theta_deg)) => {
+                    -s * theta_deg.to_radians().cos() * contact_line_factor
+                }
                 _ => 0.0,
             };
             sigma[a * n + nl + k] = young;

@@ -140,6 +140,32 @@ fn with_walls_the_same_bits_for_any_thread_count() {
 }
 
 #[test]
+fn the_liquid_solid_tension_carries_the_contact_line_calibration() {
+    use solver::kernel::{Kernel, WendlandC2};
+    use solver::model::Model;
+    use solver::physics::surface_tension::surface_force::contact_line::young_share;
+    let model = Model::from_scene(&scene(&cap(60.0, ""))).unwrap();
+    // the channel measured with the run's colour kernel: Wendland C2 of support r_e = 4.2 l0
+    let colour = WendlandC2::new(4.2 * L0 / WendlandC2::new(1.0).support_m());
+    let share = young_share(colour, L0);
+    assert_eq!(model.contact_line_factor, 1.0 / share);
+    // the phases: a 0, g 1, the plate's solid 2; Young's −σ cos θ divided by the share, the
+    // gas (no σ) none, the pair's tension as typed
+    let young = -0.05 * 60f64.to_radians().cos() / share;
+    assert!((model.surface_stress_sigma(0, 2) / young - 1.0).abs() < 1e-15);
+    assert_eq!(model.surface_stress_sigma(1, 2), 0.0);
+    assert_eq!(model.surface_stress_sigma(0, 1), 0.05);
+    // no walls: no calibration
+    let free = cap(60.0, "")
+        .split("[[wall]]")
+        .next()
+        .unwrap()
+        .replace("z = [-5e-4", "z = [0e0");
+    let model = Model::from_scene(&scene(&free)).unwrap();
+    assert_eq!(model.contact_line_factor, 1.0);
+}
+
+#[test]
 fn what_the_split_cannot_take_is_refused_with_the_reason() {
     // a second solid: the walls are one phase of the split
     let second = r#"

@@ -10,6 +10,7 @@
 
 pub mod force;
 pub mod fowkes;
+pub mod lattice_cloud;
 pub mod potential;
 pub mod surface_force;
 pub mod surface_stress;

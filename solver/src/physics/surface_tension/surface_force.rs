@@ -27,6 +27,8 @@
 //! interface. The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
 //! gathers over each wall particle's list: the bits do not depend on the thread count.
 
+pub mod contact_line;
+
 use super::surface_stress::StressInput;
 use crate::kernel::Kernel;
 use crate::physics::forces::pairs_once::{each_pair_once, Reactions, Spills};

@@ -1,6 +1,7 @@
 //! Lattice clouds for the continuum models' unit tests: particles on a simple cubic lattice,
 //! sorted by cell, with neighbour lists, and the colour kernel's lattice moment.
 
+use super::lattice_cloud::{lattice_sites, LatticeCloud};
 use super::surface_stress::StressInput;
 use crate::kernel::{Kernel, WendlandC2};
 use crate::neighbours::NeighbourSearch;
@@ -16,27 +17,13 @@ pub fn colour_kernel() -> WendlandC2 {
     WendlandC2::new(R_E / 2.0)
 }
 
-/// Particles, their phases and volumes [m³], and lists that reach the colour kernel's support.
-pub struct Cloud {
-    pub pos: Vec<Vec3>,
-    pub phase: Vec<u8>,
-    pub vol: Vec<f64>,
-    pub search: NeighbourSearch,
-    /// The fluid particles come first; walls after.
-    pub n_fluid: usize,
-}
+/// The unit tests' lattice clouds (volume `l0³` each).
+pub type Cloud = LatticeCloud;
 
 impl Cloud {
-    /// What the continuum models read of the cloud (all fluid, the colour kernel).
+    /// What the continuum models read of the cloud, with the colour kernel.
     pub fn input(&self) -> StressInput<'_, WendlandC2> {
-        StressInput {
-            kernel: colour_kernel(),
-            pos: &self.pos,
-            vol: &self.vol,
-            phase: &self.phase,
-            n_fluid: self.n_fluid,
-            lists: &self.search.lists,
-        }
+        self.stress_input(colour_kernel())
     }
 }
 
@@ -58,27 +45,7 @@ pub fn cloud_with_walls(
     let mut search = NeighbourSearch::new(1.05 * L0 * 2.0, R_E, 0.3 * L0);
     search.set_periodic(periodic);
     search.walls_reach_far = true;
-    let sorted = |x: &[Vec3]| -> Vec<Vec3> {
-        let perm = search.sort_order(x).unwrap();
-        perm.iter().map(|&i| x[i as usize]).collect()
-    };
-    let n_fluid = fluid.len();
-    let mut pos = sorted(&fluid);
-    pos.extend(sorted(&walls));
-    search.build(&pos, n_fluid).unwrap();
-    let phase = pos
-        .iter()
-        .enumerate()
-        .map(|(i, &x)| if i < n_fluid { phase_of(x) } else { wall_phase })
-        .collect();
-    let vol = vec![L0 * L0 * L0; pos.len()];
-    Cloud {
-        pos,
-        phase,
-        vol,
-        search,
-        n_fluid,
-    }
+    LatticeCloud::new(search, fluid, phase_of, walls, wall_phase, L0 * L0 * L0)
 }
 
 /// A sphere of phase 1, radius 4 l0, in a 12³ lattice cube of phase 0 (open).
@@ -102,34 +69,11 @@ pub fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
 
 /// The simple cubic lattice `(i + ½) l0` of an `nx × ny × nz` box [m].
 pub fn lattice(n: [usize; 3]) -> Vec<Vec3> {
-    let mut v = Vec::new();
-    for k in 0..n[2] {
-        for j in 0..n[1] {
-            for i in 0..n[0] {
-                v.push(Vec3::new(i as f64 + 0.5, j as f64 + 0.5, k as f64 + 0.5) * L0);
-            }
-        }
-    }
-    v
+    lattice_sites(n, L0)
 }
 
-/// The colour kernel's second moment on the lattice, `M = −V Σ_{δ≠0} W′(|δ|) δ_z²/|δ|` over
-/// the lattice offsets δ: 1 in the continuum (`−∫ z ∂_z W = ∫ W = 1`). A flat interface's
-/// `Σ V |G|` per area is `M` (each side's pairs straddling it give `M/2`).
+/// The colour kernel's second moment on the lattice ([`crate::lattice::second_moment`]): a
+/// flat interface's `Σ V |G|` per area.
 pub fn lattice_moment() -> f64 {
-    let k = colour_kernel();
-    let n = (R_E / L0).ceil() as i64 + 1;
-    let mut m = 0.0;
-    for i in -n..=n {
-        for j in -n..=n {
-            for l in -n..=n {
-                let d = Vec3::new(i as f64, j as f64, l as f64) * L0;
-                let r = d.norm();
-                if r > 0.0 {
-                    m -= L0.powi(3) * k.dw_dr(r) * d.z * d.z / r;
-                }
-            }
-        }
-    }
-    m
+    crate::lattice::second_moment(&colour_kernel(), L0)
 }

@@ -49,6 +49,17 @@ pub struct Cloud {
     pub l0_m: f64,
 }
 
+impl Cloud {
+    /// Keeps the liquid particles whose phase `keep` accepts, in their order (the walls stay):
+    /// a gas left out makes the liquids' surfaces against it free.
+    pub fn retain_phases(&mut self, keep: impl Fn(u8) -> bool) {
+        let mut kept = self.phase.iter().map(|&p| keep(p));
+        self.pos
+            .retain(|_| kept.next().expect("one phase per particle"));
+        self.phase.retain(|&p| keep(p));
+    }
+}
+
 /// Per-particle classes of a [`Cloud`] (indices as in `Cloud::pos`).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Classes {

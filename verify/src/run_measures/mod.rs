@@ -92,16 +92,13 @@ pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
     let mut rows = Vec::new();
     for (t, file) in read_pvd(&pvd).map_err(anyhow::Error::msg)? {
         let s = read_vtu(&dir.join(&file)).map_err(anyhow::Error::msg)?;
-        // the gas's particles are left out: the liquids' surfaces against it are free
-        let kept: Vec<usize> = (0..s.pos.len())
-            .filter(|&i| !gas[s.phase[i] as usize])
-            .collect();
-        let cloud = Cloud {
-            pos: kept.iter().map(|&i| s.pos[i]).collect(),
-            phase: kept.iter().map(|&i| s.phase[i] as u8).collect(),
+        let mut cloud = Cloud {
+            pos: s.pos,
+            phase: s.phase.iter().map(|&p| p as u8).collect(),
             walls: walls.clone(),
             l0_m: l0,
         };
+        cloud.retain_phases(|p| !gas[p as usize]);
         let classes = surface::classify(&cloud);
         for k in (0..n_liquids).filter(|&k| !gas[k]) {
             let pts: Vec<[f64; 3]> = (0..cloud.pos.len())

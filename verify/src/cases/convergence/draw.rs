@@ -1,8 +1,9 @@
 //! The convergence case's figures and table: |error| against l0 (log–log, with slopes 1 and 2),
-//! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution).
+//! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution, and
+//! the caps' angles of each model side by side).
 
 use super::judge::{cap_series, drop_series, host_series};
-use super::measure::{DropPoint, Measured};
+use super::measure::{CapPoint, DropPoint, Measured};
 use super::{HostModel, Series as ErrorSeries};
 use crate::report::plot::{self, Plot, Series, SeriesKind};
 use std::fmt::Write as _;
@@ -34,6 +35,7 @@ pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
         )?;
         table.push_str(&host_drop_table(h, drops));
     }
+    table.push_str(&cap_table(&m.caps));
     std::fs::write(dir.join("table.md"), table)?;
     Ok(())
 }
@@ -219,6 +221,59 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
             ge,
             d.run.info.wall_time_s
         );
+    }
+    s
+}
+
+/// The caps' table: per typed angle and resolution, each model's angle from the settled
+/// height (its error) and from the side view, side by side.
+fn cap_table(caps: &[CapPoint]) -> String {
+    let models: Vec<Option<HostModel>> = {
+        let mut v: Vec<Option<HostModel>> = caps.iter().map(|c| c.host_model).collect();
+        v.dedup();
+        v
+    };
+    let name = |m: &Option<HostModel>| m.map_or("potential", |h| h.name);
+    let mut s = String::from(
+        "\n## The caps, model by model\n\n\
+         The angle of the spherical cap of the drop's volume and its settled height (the last quarter's mean), \
+         its error against the typed angle, and the side-view fit on the last state. The continuum model's caps sit in \
+         a host without a surface tension (the gas of Young's relation) at 0.7 Pa·s.\n\n| typed | n = R/l0 |",
+    );
+    for m in &models {
+        let _ = write!(
+            s,
+            " {}: height (error) | side view | wall time [s] |",
+            name(m)
+        );
+    }
+    s.push_str("\n|---|---|");
+    s.push_str(&"---|---|---|".repeat(models.len()));
+    s.push('\n');
+    let mut rows: Vec<(f64, f64)> = caps.iter().map(|c| (c.typed_deg, c.n)).collect();
+    rows.sort_by(|a, b| a.partial_cmp(b).expect("finite angles and resolutions"));
+    rows.dedup();
+    for (theta, n) in rows {
+        let _ = write!(s, "| {theta:.0}° | {n:.0} |");
+        for m in &models {
+            let cap = caps
+                .iter()
+                .find(|c| c.typed_deg == theta && c.n == n && c.host_model == *m);
+            match cap {
+                Some(c) => {
+                    let h = c.height_angle_deg.unwrap_or(f64::NAN);
+                    let side = c.side_view_deg.as_ref().map_or(f64::NAN, |a| *a);
+                    let _ = write!(
+                        s,
+                        " {h:.1}° ({:+.1}°) | {side:.1}° | {:.0} |",
+                        h - theta,
+                        c.run.info.wall_time_s
+                    );
+                }
+                None => s.push_str(" – | – | – |"),
+            }
+        }
+        s.push('\n');
     }
     s
 }

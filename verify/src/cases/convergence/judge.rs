@@ -52,17 +52,28 @@ pub fn drop_series(drops: &[DropPoint], prefix: &str) -> [Series; 2] {
     ]
 }
 
-/// The caps' angle errors relative to the typed angle per resolution, one series per angle.
+/// The name of a cap's model in its metrics: `cap` (the potential's) or e.g.
+/// `surface force cap`.
+fn cap_prefix(c: &CapPoint) -> String {
+    match c.host_model {
+        Some(h) => format!("{} cap", h.name),
+        None => "cap".into(),
+    }
+}
+
+/// The caps' angle errors relative to the typed angle per resolution, one series per model
+/// and angle.
 pub fn cap_series(caps: &[CapPoint]) -> Vec<Series> {
-    let mut angles: Vec<f64> = caps.iter().map(|c| c.typed_deg).collect();
-    angles.dedup();
-    angles
+    let mut groups: Vec<(String, f64)> =
+        caps.iter().map(|c| (cap_prefix(c), c.typed_deg)).collect();
+    groups.dedup();
+    groups
         .into_iter()
-        .map(|theta| Series {
-            label: format!("cap {theta:.0}° (from height)"),
+        .map(|(prefix, theta)| Series {
+            label: format!("{prefix} {theta:.0}° (from height)"),
             points: caps
                 .iter()
-                .filter(|c| c.typed_deg == theta)
+                .filter(|c| c.typed_deg == theta && cap_prefix(c) == prefix)
                 .map(|c| {
                     let e = c.height_angle_deg.map_or(f64::NAN, |a| (a - theta) / theta);
                     (1.0 / c.n, e)
@@ -193,6 +204,13 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
 
 fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {
     let (theta, n) = (c.typed_deg, c.n);
+    let prefix = cap_prefix(c);
+    let host = match c.host_model {
+        Some(_) => {
+            "; in a host without a surface tension (the gas of Young's relation), at 0.7 Pa·s"
+        }
+        None => "",
+    };
     let status = c.run.status_note();
     let target = angle_target_deg(theta);
     let side = match &c.side_view_deg {
@@ -207,7 +225,7 @@ fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {
     vec![
         Metric::new(
             case,
-            format!("cap {theta:.0}° n={n:.0} (height)"),
+            format!("{prefix} {theta:.0}° n={n:.0} (height)"),
             "deg",
             c.height_angle_deg.unwrap_or(f64::NAN),
         )
@@ -220,12 +238,17 @@ fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {
         )
         .run(c.run)
         .note(format!(
-            "{status}the spherical cap of the drop's volume and its settled height {:.4} mm (±{:.4} mm over the last quarter; the cap at the typed angle: {:.4} mm)",
+            "{status}the spherical cap of the drop's volume and its settled height {:.4} mm (±{:.4} mm over the last quarter; the cap at the typed angle: {:.4} mm){host}",
             c.height_m * 1e3,
             c.height_swing_m * 1e3,
             c.reference_height_m * 1e3
         )),
-        Metric::new(case, format!("cap {theta:.0}° n={n:.0} (side view)"), "deg", side)
+        Metric::new(
+            case,
+            format!("{prefix} {theta:.0}° n={n:.0} (side view)"),
+            "deg",
+            side,
+        )
             .run(c.run)
             .note(format!("{status}{side_note}"))
             .against_if(theta, None),

@@ -62,6 +62,8 @@ pub struct DropPoint<'r> {
 pub struct CapPoint<'r> {
     /// The run.
     pub run: &'r RunData,
+    /// The continuum model of a cap in a host (none: the potential's cap).
+    pub host_model: Option<HostModel>,
     /// Spacings per initial hemisphere radius [-].
     pub n: f64,
     /// The typed Young angle [deg].
@@ -85,7 +87,7 @@ pub struct Measured<'r> {
     pub drops: Vec<DropPoint<'r>>,
     /// Drops under each continuum model that ran, in their host, coarsest first.
     pub host_drops: Vec<(HostModel, Vec<DropPoint<'r>>)>,
-    /// Caps, by angle then coarsest first.
+    /// Caps, the potential's then each continuum model's, by angle then coarsest first.
     pub caps: Vec<CapPoint<'r>>,
 }
 
@@ -119,15 +121,20 @@ pub fn measure(runs: &[RunData]) -> Measured<'_> {
             .map(cap_point)
             .collect(),
     };
-    m.caps
-        .sort_by(|a, b| (a.typed_deg, a.n).partial_cmp(&(b.typed_deg, b.n)).unwrap());
+    let model_rank = |c: &CapPoint| c.host_model.map(|h| h.id);
+    m.caps.sort_by(|a, b| {
+        model_rank(a)
+            .cmp(&model_rank(b))
+            .then(a.typed_deg.total_cmp(&b.typed_deg))
+            .then(a.n.total_cmp(&b.n))
+    });
     m
 }
 
-/// A cap's volume: its particles' rest volume l0³ [m³].
+/// A cap's volume: its particles' rest volume l0³ [m³] (the host's left out).
 fn volume_m3(run: &RunData) -> f64 {
     let l0 = run.info.scene.discretisation.l0;
-    run.info.fluid_particles as f64 * l0 * l0 * l0
+    drop_particles(run) as f64 * l0 * l0 * l0
 }
 
 /// The drop's particles: the first liquid's count at the start (all of a free drop's).
@@ -280,10 +287,15 @@ fn cap_point(run: &RunData) -> CapPoint<'_> {
     let (mean_top, swing) = tail_stats(&t, &top, from);
     let height_m = mean_top + 0.5 * l0;
     let volume = volume_m3(run);
-    let cloud = run.last.cloud(l0);
+    let mut cloud = run.last.cloud(l0);
+    let host_model = host_model(run);
+    if host_model.is_some() {
+        cloud.retain_phases(|p| p == 0); // the host is the gas
+    }
     let classes = surface::classify(&cloud);
     CapPoint {
         run,
+        host_model,
         n: RADIUS_M / l0,
         typed_deg,
         height_m,

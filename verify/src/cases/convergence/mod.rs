@@ -10,6 +10,12 @@
 //!   a free-slip plate in zero gravity, at three `R/l0`; its settled height (the mean of the
 //!   top over the last quarter of the run) gives the angle of the spherical cap of the drop's
 //!   volume, judged against the typed angle; the side-view fit's angle is reported beside it.
+//! - **The same caps under the surface force** (docs/model.md §4b): it acts between liquids
+//!   only, so the cap sits in a host declared without a surface tension (the gas of Young's
+//!   relation, which leaves the typed angle as it is), of the drop's density and viscosity,
+//!   in a box periodic along x, y and z over a plate that spans it. The drop is a matte-like
+//!   liquid of 0.7 Pa·s, so that it settles within the run (at the matte's own viscosity a
+//!   liquid cap rings for about a second); measured as the potential's caps.
 //!
 //! - **The same drop under each continuum model** (docs/model.md §4a, §4b): the surface stress
 //!   and the surface force, at the same `R/l0`. They act between liquids only, so the drop sits
@@ -55,6 +61,24 @@ const FIT_FROM_S: f64 = 1e-3;
 /// Radius of the caps' plate [m]: the 30° cap of the hemisphere's volume has a wetted radius of
 /// 1.69 R.
 const PLATE_RADIUS_M: f64 = 2.2 * RADIUS_M;
+
+/// The matte-like liquid of the surface force's caps: the matte's density and surface tension
+/// at 0.7 Pa·s, so that a cap settles within the run: its Ohnesorge number `μ/√(ρσR)` is 0.52
+/// at R = 1 mm, where the matte's own 3.13 mPa·s leaves a liquid cap ringing for the viscous
+/// time `ρR²/μ` ≈ 1.4 s.
+const VISCOUS_MATTE: LiquidProps = LiquidProps {
+    viscosity_pa_s: 0.7,
+    ..MATTE
+};
+/// The host of the surface force's caps: the drop's density and viscosity, declared without a
+/// surface tension (its σ is not read).
+const CAP_HOST: LiquidProps = LiquidProps {
+    name: "host",
+    ..VISCOUS_MATTE
+};
+/// Height of the surface force's cap boxes above the plate over R [-]: the 120° cap of the
+/// hemisphere's volume is 1.26 R high.
+const CAP_BOX_HEIGHT_OVER_R: f64 = 2.0;
 
 /// Water at 20 °C: σ 72.8 mN/m, μ 1.0 mPa·s, ρ 997 kg/m³.
 const WATER_20C: LiquidProps = LiquidProps {
@@ -207,6 +231,11 @@ fn cap_id(theta_deg: f64, n: f64) -> String {
     format!("cap_{theta_deg:.0}_n{n:.0}")
 }
 
+/// Run id of the surface force's cap at `theta_deg` with `n` spacings per radius.
+fn csf_cap_id(theta_deg: f64, n: f64) -> String {
+    format!("{}_{}", HOST_MODELS[1].id, cap_id(theta_deg, n))
+}
+
 fn drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
     let l0 = RADIUS_M / r_over_l0;
     let (a, c) = (
@@ -303,6 +332,61 @@ fn cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
         .build()
 }
 
+/// The cap of [`cap_scene`] under the surface force: the viscous matte-like drop in its host
+/// ([`VISCOUS_MATTE`], [`CAP_HOST`]) filling a box periodic along x, y and z, `2 ×` the plate
+/// radius square and [`CAP_BOX_HEIGHT_OVER_R`] R high above the plate, which spans the box
+/// (the host at the top meets the plate's underside), at the continuum drops' kernel and a
+/// sound speed for which the cap's Laplace pressure compresses it by 1 %.
+fn csf_cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
+    let l0 = RADIUS_M / n;
+    let half = (PLATE_RADIUS_M / l0).round() * l0;
+    let top = (CAP_BOX_HEIGHT_OVER_R * n).round() * l0;
+    let b = SceneBuilder::new(l0, laplace_sound_speed(&VISCOUS_MATTE, RADIUS_M))
+        .time(end_times_s(f).1, 2e-4)
+        .kernel(
+            solver::kernel::KernelKind::WendlandC2,
+            CSS_H_OVER_L0,
+            solver::scene::Setting::Natsui2021.re_over_l0(),
+        )
+        .paper_effects()
+        .tension_model(HOST_MODELS[1].model)
+        .liquid(&VISCOUS_MATTE)
+        .gas(&CAP_HOST)
+        .interface(MATTE.name, CAP_HOST.name, MATTE.surface_tension_n_m)
+        .solid("plate", &[(MATTE.name, theta_deg)])
+        .body(
+            "drop",
+            MATTE.name,
+            BodyShape::Hemisphere {
+                center: [0.0; 3],
+                radius: RADIUS_M,
+                pole: [0.0, 0.0, 1.0],
+            },
+        )
+        .body(
+            "host",
+            CAP_HOST.name,
+            BodyShape::Surrounding {
+                min: [-half, -half, 0.0],
+                max: [half, half, top],
+            },
+        )
+        .wall(
+            "plate",
+            "plate",
+            WallShape::Plate {
+                min: [-half, -half],
+                max: [half, half],
+                top: 0.0,
+            },
+            WallBoundary::FreeSlip,
+        );
+    let s = b.scene();
+    let below = s.wall_layers(&s.walls[0]) as f64 * l0;
+    b.periodic_box([-half, -half, -below], [half, half, top])
+        .build()
+}
+
 impl Case for Convergence {
     fn name(&self) -> &'static str {
         "convergence"
@@ -351,6 +435,13 @@ impl Case for Convergence {
                 snapshot_times_s: vec![],
             })
         });
+        let csf_caps = d.angles_deg.iter().flat_map(|&theta| {
+            d.caps.iter().map(move |&n| RunSpec {
+                id: csf_cap_id(theta, n),
+                scene: csf_cap_scene(f, theta, n),
+                snapshot_times_s: vec![],
+            })
+        });
         let css_drops = HOST_MODELS.iter().flat_map(|m| {
             d.css_drops.iter().map(move |&r| RunSpec {
                 id: css_drop_id(m, r),
@@ -358,7 +449,7 @@ impl Case for Convergence {
                 snapshot_times_s: vec![],
             })
         });
-        drops.chain(caps).chain(css_drops).collect()
+        drops.chain(caps).chain(css_drops).chain(csf_caps).collect()
     }
     fn probe(&self, sim: &Simulation) -> Vec<(&'static str, f64)> {
         // the drop's particles: phase 0 (the surface-stress drop's host is phase 1)
@@ -432,29 +523,38 @@ mod tests {
             assert_eq!(
                 runs.len(),
                 d.drops.len()
-                    + d.caps.len() * d.angles_deg.len()
+                    + 2 * d.caps.len() * d.angles_deg.len()
                     + HOST_MODELS.len() * d.css_drops.len()
             );
             for r in &runs {
                 let walls = !r.scene.walls.is_empty();
-                assert_eq!(walls, r.id.starts_with("cap_"), "{}", r.id);
+                assert_eq!(walls, r.id.contains("cap_"), "{}", r.id);
                 assert!(r.scene.effects.gravity.is_none(), "{}: zero gravity", r.id);
                 let model = HostModel::of(r.scene.effects.interfacial_tension);
                 let css = model.is_some();
-                let id = model.map(|m| format!("{}_drop_", m.id));
+                let id = model.map(|m| format!("{}_", m.id));
                 assert_eq!(css, id.is_some_and(|p| r.id.starts_with(&p)), "{}", r.id);
-                // the surface-stress drop and its host fill the periodic box, and the two
-                // liquids' particles are as many as its lattice sites
+                // a continuum model's drop or cap and its host fill the periodic box, and the
+                // two liquids' particles are as many as its lattice sites (the plate's below)
                 if css {
                     let p = &r.scene.periodic;
-                    let side = p.x.map(|[lo, hi]| hi - lo).unwrap();
-                    let n = (side / r.scene.discretisation.l0).round() as usize;
+                    let l0 = r.scene.discretisation.l0;
+                    let floor = if walls { 0.0 } else { f64::NEG_INFINITY };
+                    let sites = |axis: Option<[f64; 2]>, floor: f64| {
+                        let [lo, hi] = axis.unwrap();
+                        ((hi - lo.max(floor)) / l0).round() as usize
+                    };
+                    let n = [
+                        sites(p.x, f64::NEG_INFINITY),
+                        sites(p.y, f64::NEG_INFINITY),
+                        sites(p.z, floor),
+                    ];
                     let inv = solver::setup::build_particles(
                         &r.scene,
                         &solver::model::Model::from_scene(&r.scene).unwrap(),
                     )
                     .unwrap();
-                    assert_eq!(inv.0.n_fluid, n * n * n, "{}", r.id);
+                    assert_eq!(inv.0.n_fluid, n[0] * n[1] * n[2], "{}", r.id);
                 }
             }
         }

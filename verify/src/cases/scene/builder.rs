@@ -185,6 +185,19 @@ impl SceneBuilder {
         self
     }
 
+    /// A liquid phase without a surface tension (`l`'s is not read): under the continuum
+    /// models, the gas around the others, which takes no contact angle on a solid (Young's
+    /// `σ_gS = σ_S`; docs/model.md §4b).
+    pub fn gas(mut self, l: &LiquidProps) -> Self {
+        self = self.liquid(l);
+        self.scene
+            .liquids
+            .last_mut()
+            .expect("just added")
+            .surface_tension = None;
+        self
+    }
+
     /// The interfacial tension [N/m] between liquids `a` and `b`.
     pub fn interface(mut self, a: &str, b: &str, tension_n_m: f64) -> Self {
         self.scene.interfaces.push(Interface {

@@ -24,7 +24,7 @@ fn angle_target_deg(theta_deg: f64) -> f64 {
 
 /// The period's and the damping's relative errors per resolution `(l0/R, error)`; `prefix`
 /// names the drop (`drop`, or a continuum model's label).
-pub fn drop_series(drops: &[DropPoint], prefix: &str) -> [Series; 2] {
+pub fn drop_series(drops: &[DropPoint], prefix: &str, expected: usize) -> [Series; 2] {
     let rel = |v: f64, r: f64| (v - r) / r;
     let (period, damping) = drops
         .iter()
@@ -44,10 +44,12 @@ pub fn drop_series(drops: &[DropPoint], prefix: &str) -> [Series; 2] {
         Series {
             label: format!("{prefix} l = 2 period"),
             points: period,
+            expected,
         },
         Series {
             label: format!("{prefix} l = 2 damping (ν + ν_AV)"),
             points: damping,
+            expected,
         },
     ]
 }
@@ -63,7 +65,7 @@ fn cap_prefix(c: &CapPoint) -> String {
 
 /// The caps' angle errors relative to the typed angle per resolution, one series per model
 /// and angle.
-pub fn cap_series(caps: &[CapPoint]) -> Vec<Series> {
+pub fn cap_series(caps: &[CapPoint], expected: usize) -> Vec<Series> {
     let mut groups: Vec<(String, f64)> =
         caps.iter().map(|c| (cap_prefix(c), c.typed_deg)).collect();
     groups.dedup();
@@ -79,6 +81,7 @@ pub fn cap_series(caps: &[CapPoint]) -> Vec<Series> {
                     (1.0 / c.n, e)
                 })
                 .collect(),
+            expected,
         })
         .collect()
 }
@@ -90,9 +93,9 @@ pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
     for (_, drops) in &m.host_drops {
         out.extend(drops.iter().flat_map(|d| drop_metrics(case, d)));
     }
-    let series = drop_series(&m.drops, "drop")
+    let series = drop_series(&m.drops, "drop", m.declared.drops)
         .into_iter()
-        .chain(cap_series(&m.caps))
+        .chain(cap_series(&m.caps, m.declared.caps))
         .chain(host_series(m));
     for s in series {
         out.extend(order_metrics(case, &s));
@@ -104,7 +107,7 @@ pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
 pub fn host_series(m: &Measured) -> Vec<Series> {
     m.host_drops
         .iter()
-        .flat_map(|(h, drops)| drop_series(drops, h.label))
+        .flat_map(|(h, drops)| drop_series(drops, h.label, m.declared.host_drops))
         .collect()
 }
 

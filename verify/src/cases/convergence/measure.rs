@@ -13,7 +13,7 @@ use crate::measure::geometry;
 use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
 use crate::measure::surface;
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
-use crate::suite::RunData;
+use crate::suite::{Fidelity, RunData};
 use solver::kernel::KernelKind;
 use solver::physics::surface_tension::surface_force::BAND_GRADIENT_TIMES_R_E;
 use solver::scene::TensionModel;
@@ -89,6 +89,19 @@ pub struct Measured<'r> {
     pub host_drops: Vec<(HostModel, Vec<DropPoint<'r>>)>,
     /// Caps, the potential's then each continuum model's, by angle then coarsest first.
     pub caps: Vec<CapPoint<'r>>,
+    /// The resolutions the fidelity declares: of the free drop, of each continuum model's
+    /// drop, of each cap.
+    pub declared: Declared,
+}
+
+/// How many resolutions a fidelity declares per family of runs.
+pub struct Declared {
+    /// The potential's free drop.
+    pub drops: usize,
+    /// Each continuum model's drop.
+    pub host_drops: usize,
+    /// Each model's cap at each angle.
+    pub caps: usize,
 }
 
 /// The continuum model of `run`'s drop in a host, if it is one.
@@ -98,7 +111,8 @@ fn host_model(run: &RunData) -> Option<HostModel> {
 
 /// Measures the runs (drops have no wall, caps have one; the continuum models' drops have a
 /// host).
-pub fn measure(runs: &[RunData]) -> Measured<'_> {
+pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
+    let d = super::design(f);
     let drops = |model: Option<HostModel>| -> Vec<DropPoint> {
         let mut v: Vec<DropPoint> = runs
             .iter()
@@ -120,6 +134,11 @@ pub fn measure(runs: &[RunData]) -> Measured<'_> {
             .filter(|r| !r.info.scene.walls.is_empty())
             .map(cap_point)
             .collect(),
+        declared: Declared {
+            drops: d.drops.len(),
+            host_drops: d.css_drops.len(),
+            caps: d.caps.len(),
+        },
     };
     let model_rank = |c: &CapPoint| c.host_model.map(|h| h.id);
     m.caps.sort_by(|a, b| {

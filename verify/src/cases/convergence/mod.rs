@@ -470,8 +470,8 @@ impl Case for Convergence {
 impl Analysis for Convergence {
     type Measured<'r> = measure::Measured<'r>;
 
-    fn measure<'r>(&self, _: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
-        Ok(measure::measure(runs))
+    fn measure<'r>(&self, f: Fidelity, runs: &'r [RunData]) -> anyhow::Result<Self::Measured<'r>> {
+        Ok(measure::measure(runs, f))
     }
 
     fn judge(&self, _: Fidelity, measured: &Self::Measured<'_>) -> anyhow::Result<Vec<Metric>> {
@@ -490,6 +490,9 @@ pub struct Series {
     pub label: String,
     /// `(l0/R, relative error)` per resolution, coarsest first [-].
     pub points: Vec<(f64, f64)>,
+    /// The number of resolutions the fidelity declares: fewer points (runs missing from a
+    /// partial report) say nothing of convergence.
+    pub expected: usize,
 }
 
 impl Series {
@@ -499,10 +502,11 @@ impl Series {
         observed_order(&h, &e)
     }
 
-    /// Whether the error at the finest spacing is smaller than at the coarsest (both measured).
+    /// Whether the error at the finest spacing is smaller than at the coarsest (every declared
+    /// resolution measured).
     pub fn falls(&self) -> Option<bool> {
         let finite: Vec<&(f64, f64)> = self.points.iter().filter(|p| p.1.is_finite()).collect();
-        if finite.len() < 2 || finite.len() < self.points.len() {
+        if finite.len() < 2 || finite.len() < self.points.len().max(self.expected) {
             return None;
         }
         let coarse = finite.iter().max_by(|a, b| a.0.total_cmp(&b.0))?;
@@ -572,8 +576,13 @@ mod tests {
         let s = |e: [f64; 3]| Series {
             label: "x".into(),
             points: vec![(0.1, e[0]), (0.07, e[1]), (0.05, e[2])],
+            expected: 3,
         };
         assert_eq!(s([0.1, 0.05, -0.02]).falls(), Some(true));
+        // a resolution not run (a partial report): no verdict
+        let mut partial = s([0.1, 0.05, -0.02]);
+        partial.points.pop();
+        assert_eq!(partial.falls(), None);
         assert_eq!(s([-0.27, -0.40, -0.52]).falls(), Some(false));
         assert_eq!(s([0.1, f64::NAN, 0.02]).falls(), None);
         let (p, _) = s([-0.27, -0.40, -0.52]).order().unwrap();

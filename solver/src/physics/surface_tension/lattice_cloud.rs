@@ -88,3 +88,24 @@ pub fn lattice_sites(n: [usize; 3], l0_m: f64) -> Vec<Vec3> {
     }
     v
 }
+
+/// The kernel's second moment on the lattice, `M = −l0³ Σ_{δ≠0} W′(|δ|) δ_z²/|δ|` over the
+/// lattice offsets δ [-]: 1 in the continuum (`−∫ z ∂_z W = ∫ W = 1`). With the colour kernel,
+/// a flat (001) interface's `Σ V |∇c|` per area is `M` (the pairs straddling it give `M/2`
+/// on each side): the continuum models' interfacial energy per tension and area on the lattice.
+pub fn second_moment<K: Kernel>(kernel: &K, l0: f64) -> f64 {
+    let n = (kernel.support_m() / l0).ceil() as i64 + 1;
+    let mut m = 0.0;
+    for k in -n..=n {
+        for j in -n..=n {
+            for i in -n..=n {
+                let r = l0 * ((i * i + j * j + k * k) as f64).sqrt();
+                if r > 0.0 {
+                    let dz = k as f64 * l0;
+                    m -= l0 * l0 * l0 * kernel.dw_dr(r) * dz * dz / r;
+                }
+            }
+        }
+    }
+    m
+}

@@ -72,8 +72,8 @@ pub fn lattice(n: [usize; 3]) -> Vec<Vec3> {
     lattice_sites(n, L0)
 }
 
-/// The colour kernel's second moment on the lattice ([`crate::lattice::second_moment`]): a
+/// The colour kernel's second moment on the lattice ([`crate::physics::surface_tension::lattice_cloud::second_moment`]): a
 /// flat interface's `Σ V |G|` per area.
 pub fn lattice_moment() -> f64 {
-    crate::lattice::second_moment(&colour_kernel(), L0)
+    crate::physics::surface_tension::lattice_cloud::second_moment(&colour_kernel(), L0)
 }

@@ -39,7 +39,7 @@ pub struct Channel {
     half_window_m: f64,
     /// The channel's width along y: the contact line's length on each wall [m].
     width_y_m: f64,
-    /// The colour kernel's second moment on the lattice [-] ([`crate::lattice::second_moment`]).
+    /// The colour kernel's second moment on the lattice [-] ([`crate::physics::surface_tension::lattice_cloud::second_moment`]).
     moment: f64,
 }
 
@@ -72,7 +72,7 @@ impl Channel {
             middle_x_m,
             half_window_m: (2 * reach) as f64 * l0_m,
             width_y_m: ny as f64 * l0_m,
-            moment: crate::lattice::second_moment(colour, l0_m),
+            moment: crate::physics::surface_tension::lattice_cloud::second_moment(colour, l0_m),
         }
     }
 

@@ -44,6 +44,8 @@ use crate::analytic::lamb;
 use crate::measure::convergence::observed_order;
 use crate::measure::shape::axial_quadrupole_q2;
 use crate::suite::{Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
+use solver::kernel::KernelKind;
+use solver::scene::Setting::Natsui2021;
 use solver::scene::{BodyShape, TensionModel, WallBoundary, WallShape};
 use solver::Simulation;
 use std::f64::consts::SQRT_2;
@@ -54,6 +56,12 @@ pub struct Convergence;
 
 /// Equal-volume radius of the free drop, and radius of the caps' initial hemisphere [m].
 const RADIUS_M: f64 = 1e-3;
+/// The caps' start: a hemisphere of radius R on the plate (z = 0), pole up.
+const CAP_START: BodyShape = BodyShape::Hemisphere {
+    center: [0.0; 3],
+    radius: RADIUS_M,
+    pole: [0.0, 0.0, 1.0],
+};
 /// Initial stretch of the free drop along z [-].
 const EPSILON: f64 = 0.1;
 /// The fit of the free drop starts after the release transient [s].
@@ -276,9 +284,9 @@ fn css_drop_scene(f: Fidelity, m: &HostModel, r_over_l0: f64) -> solver::Scene {
     SceneBuilder::new(l0, css_sound_speed_m_s())
         .time(FIT_FROM_S + periods * host_period_s(), 1e-4)
         .kernel(
-            solver::kernel::KernelKind::WendlandC2,
+            KernelKind::WendlandC2,
             CSS_H_OVER_L0,
-            solver::scene::Setting::Natsui2021.re_over_l0(),
+            Natsui2021.re_over_l0(),
         )
         .paper_effects()
         .tension_model(m.model)
@@ -311,15 +319,7 @@ fn cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
         .paper_effects()
         .liquid(&MATTE)
         .solid("plate", &[(MATTE.name, theta_deg)])
-        .body(
-            "drop",
-            MATTE.name,
-            BodyShape::Hemisphere {
-                center: [0.0; 3],
-                radius: RADIUS_M,
-                pole: [0.0, 0.0, 1.0],
-            },
-        )
+        .body("drop", MATTE.name, CAP_START)
         .wall(
             "plate",
             "plate",
@@ -344,9 +344,9 @@ fn csf_cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
     let b = SceneBuilder::new(l0, laplace_sound_speed(&VISCOUS_MATTE, RADIUS_M))
         .time(end_times_s(f).1, 2e-4)
         .kernel(
-            solver::kernel::KernelKind::WendlandC2,
+            KernelKind::WendlandC2,
             CSS_H_OVER_L0,
-            solver::scene::Setting::Natsui2021.re_over_l0(),
+            Natsui2021.re_over_l0(),
         )
         .paper_effects()
         .tension_model(HOST_MODELS[1].model)
@@ -354,15 +354,7 @@ fn csf_cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
         .gas(&CAP_HOST)
         .interface(MATTE.name, CAP_HOST.name, MATTE.surface_tension_n_m)
         .solid("plate", &[(MATTE.name, theta_deg)])
-        .body(
-            "drop",
-            MATTE.name,
-            BodyShape::Hemisphere {
-                center: [0.0; 3],
-                radius: RADIUS_M,
-                pole: [0.0, 0.0, 1.0],
-            },
-        )
+        .body("drop", MATTE.name, CAP_START)
         .body(
             "host",
             CAP_HOST.name,

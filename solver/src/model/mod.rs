@@ -14,9 +14,10 @@ use crate::lattice;
 use crate::periodic::PeriodicBox;
 use crate::physics::eos::TaitEos;
 use crate::physics::forces::wall_repulsion as repulsion;
-use crate::physics::surface_tension::surface_force::contact_line;
+use crate::physics::surface_tension::surface_force::wall_normal::WallNormal;
+use crate::physics::surface_tension::surface_force::{contact_line, Walls};
 use crate::physics::surface_tension::{Kondo2007Potential, PairTable};
-use crate::scene::{Health, ParticleMass, Scene, SceneError, TimeControl};
+use crate::scene::{Health, ParticleMass, Scene, SceneError, SurfaceForceWalls, TimeControl};
 use crate::state::Vec3;
 use crate::with_kernel;
 
@@ -57,13 +58,13 @@ pub struct Model {
     /// The tension [N/m] of each pair of phases for the continuum surface stress, row-major
     /// (empty without it; [`pairs::surface_stress_table`]).
     pub surface_stress_sigma: Vec<f64>,
-    /// The phase of the walls' solid where the walls take part in the continuum surface force
-    /// (its walls are all of one solid), else `None`.
-    pub surface_force_wall: Option<usize>,
+    /// How the walls take part in the continuum surface force (their solid's phase: its walls
+    /// are all of one solid), [`Walls::Absent`] without walls or without the force.
+    pub surface_force_walls: Walls,
     /// The factor on the liquid–solid tensions of the surface force at walls [-]: one over the
     /// share of Young's push the force hands to the liquid on the lattice
-    /// ([`contact_line::young_share`]; 1.117 with Wendland C2 at `r_e = 4.2 l0`), 1 where the
-    /// walls take no part.
+    /// ([`contact_line::young_share`]; with Wendland C2 at `r_e = 4.2 l0`, 1.117 for the
+    /// shares' walls and 1.130 for the wall normal's), 1 where the walls take no part.
     pub contact_line_factor: f64,
     /// The factor on each liquid's coefficients from a relaxed-slab calibration
     /// ([`Model::scale_tension`]; 1 with the lattice calibration).
@@ -182,23 +183,30 @@ impl Model {
             })
             .collect();
         let support_m = scene.kernel_support();
-        let surface_force_wall = scene
+        let surface_force_walls = scene
             .walls
             .first()
             .filter(|_| effects.continuum_tension == Some(ContinuumForm::Force))
             .and_then(|w| scene.solid_index(&w.solid))
-            .map(|k| n_liquids + k);
+            .map_or(Walls::Absent, |k| {
+                let solid = n_liquids + k;
+                match scene.effects.surface_force_walls {
+                    SurfaceForceWalls::Shares => Walls::Shares(solid),
+                    SurfaceForceWalls::Normal => Walls::Normal(WallNormal { solid, l0_m: l0 }),
+                }
+            });
         // the share of Young's push the force hands to the liquid at a wall, measured on the
         // lattice channel with the run's colour kernel (support r_e; docs/model.md §4b)
-        let contact_line_factor = match surface_force_wall {
-            Some(_) => {
+        let contact_line_factor = match surface_force_walls {
+            Walls::Absent => 1.0,
+            walls => {
+                let turn_normals = matches!(walls, Walls::Normal(_));
                 let share = with_kernel!(d.kernel, K => {
                     let colour = K::new(r_e / K::new(1.0).support_m());
-                    contact_line::young_share(colour, l0)
+                    contact_line::young_share(colour, l0, turn_normals)
                 });
                 1.0 / share
             }
-            None => 1.0,
         };
         let surface_stress_sigma = if effects.continuum_tension.is_some() {
             pairs::surface_stress_table(scene, contact_line_factor)
@@ -236,7 +244,7 @@ impl Model {
             mu_pair,
             pairs,
             surface_stress_sigma,
-            surface_force_wall,
+            surface_force_walls,
             contact_line_factor,
             tension_scales: vec![1.0; n_liquids],
             pair_tension_scales: Vec::new(),

@@ -370,6 +370,13 @@ pub struct Effects {
     /// yet; `false` (the default): none.
     #[serde(default)]
     pub interfacial_tension: TensionModel,
+    /// How walls take part in the surface force (with `interfacial_tension = "surface_force"`
+    /// only): `"shares"` (the default) — their solid is a third phase of the force's split of
+    /// the tensions, with each liquid's Young tension `−σ cos θ`; `"normal"` — they are no
+    /// phase, and near them the interface's normal is turned to the contact angle's
+    /// (Breinlinger et al. 2013; docs/model.md §4b).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub surface_force_walls: SurfaceForceWalls,
     /// A short-range liquid–wall repulsion that does not depend on the kernel (Monaghan 1994's
     /// boundary force, acting within 0.8 l0 of a wall particle), for wide kernels whose
     /// pressure does not hold a wetting liquid out of the gaps between wall particles. Needs
@@ -710,6 +717,17 @@ pub enum LaminarForm {
     /// `x_i − x_j`, proportional to `v_ij·x_ij` — zero under a rigid rotation, conserving
     /// angular momentum, consistent at a free surface (Colagrossi et al. 2011).
     MonaghanClearyGingold,
+}
+
+/// How walls take part in the continuum surface force.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum SurfaceForceWalls {
+    /// The walls' solid is a third phase of the split of the tensions (Young's shares).
+    #[default]
+    Shares,
+    /// The walls turn the interface's normal to the contact angle (Breinlinger et al. 2013).
+    Normal,
 }
 
 /// Tangential condition at a wall.

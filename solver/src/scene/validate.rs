@@ -3,8 +3,8 @@
 //! simulation is built ([`crate::Simulation::new`]).
 
 use super::{
-    shapes::on_lattice_plane, DensityScheme, LaminarForm, Reinit, Scene, SceneError, TensionModel,
-    WallBoundary,
+    shapes::on_lattice_plane, DensityScheme, LaminarForm, Reinit, Scene, SceneError,
+    SurfaceForceWalls, TensionModel, WallBoundary,
 };
 use std::collections::BTreeSet;
 
@@ -299,6 +299,16 @@ fn effects(s: &Scene) -> R {
                 "A in δr = −A h U dt ∇C: in (0, 8] (4 is Sun et al. 2017's; larger moves a particle more than its spacing per step)",
             ));
         }
+    }
+    if e.surface_force_walls != SurfaceForceWalls::default()
+        && e.interfacial_tension != TensionModel::SurfaceForce
+    {
+        return Err(SceneError::invalid(
+            "effects.surface_force_walls",
+            "normal",
+            "is how walls take part in the continuum surface force: it needs \
+             effects.interfacial_tension = \"surface_force\"",
+        ));
     }
     if e.laminar_form != LaminarForm::default() {
         if !e.laminar_viscosity {

@@ -105,7 +105,7 @@ impl Simulation {
             }
             ContinuumForm::Force => {
                 self.surface_force
-                    .evaluate(&inp, m.n_liquids, sigma, m.surface_force_wall);
+                    .evaluate(&inp, m.n_liquids, sigma, m.surface_force_walls);
                 &self.surface_force.force
             }
         };

@@ -36,6 +36,7 @@ use crate::model::Model;
 use crate::neighbours::NeighbourSearch;
 use crate::observables::{observe, Observables};
 use crate::physics::forces::Dissipation;
+use crate::physics::surface_tension::surface_force::Walls;
 use crate::scene::{Scene, TensionCalibration};
 use crate::setup::{build_particles, Inventory};
 use crate::state::Particles;
@@ -141,7 +142,7 @@ impl Simulation {
         );
         search.set_periodic(model.periodic);
         // the surface force's colour gradient at walls reaches r_e from the wall side
-        search.walls_reach_far = model.surface_force_wall.is_some();
+        search.walls_reach_far = model.surface_force_walls != Walls::Absent;
         let drho_next = if model.effects.continuity() {
             vec![0.0; particles.n_fluid]
         } else {

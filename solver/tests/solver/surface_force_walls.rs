@@ -4,6 +4,8 @@
 //! reason.
 
 use super::common::{error_of, scene};
+use solver::physics::surface_tension::surface_force::wall_normal::WallNormal;
+use solver::physics::surface_tension::surface_force::Walls;
 use solver::state::Vec3;
 use solver::Simulation;
 
@@ -147,7 +149,7 @@ fn the_liquid_solid_tension_carries_the_contact_line_calibration() {
     let model = Model::from_scene(&scene(&cap(60.0, ""))).unwrap();
     // the channel measured with the run's colour kernel: Wendland C2 of support r_e = 4.2 l0
     let colour = WendlandC2::new(4.2 * L0 / WendlandC2::new(1.0).support_m());
-    let share = young_share(colour, L0);
+    let share = young_share(colour, L0, false);
     assert_eq!(model.contact_line_factor, 1.0 / share);
     // the phases: a 0, g 1, the plate's solid 2; Young's −σ cos θ divided by the share, the
     // gas (no σ) none, the pair's tension as typed
@@ -163,6 +165,52 @@ fn the_liquid_solid_tension_carries_the_contact_line_calibration() {
         .replace("z = [-5e-4", "z = [0e0");
     let model = Model::from_scene(&scene(&free)).unwrap();
     assert_eq!(model.contact_line_factor, 1.0);
+    // the wall normal's treatment: its own channel's share, and the walls' solid with it
+    let model = Model::from_scene(&scene(&normal(&cap(60.0, "")))).unwrap();
+    let share = young_share(colour, L0, true);
+    assert_eq!(model.contact_line_factor, 1.0 / share);
+    assert!(matches!(
+        model.surface_force_walls,
+        Walls::Normal(WallNormal { solid: 2, .. })
+    ));
+}
+
+/// `text` with the walls as the wall normal's condition (`effects.surface_force_walls`).
+fn normal(text: &str) -> String {
+    text.replace(
+        "[effects]\n",
+        "[effects]\nsurface_force_walls = \"normal\"\n",
+    )
+}
+
+#[test]
+fn with_the_wall_normal_a_cap_spreads_below_90_degrees_and_draws_back_above() {
+    // the shares' test above, with the wall normal's walls (docs/model.md §4b)
+    let speed = |theta| foot_velocity(&run(&normal(&cap(theta, "")), 2, 100));
+    let (wet, neutral, dry) = (speed(60.0), speed(90.0), speed(120.0));
+    eprintln!("foot speed [m/s]: 60° {wet:e}, 90° {neutral:e}, 120° {dry:e}");
+    assert!(wet > neutral && neutral > dry, "{wet} {neutral} {dry}");
+}
+
+#[test]
+fn with_the_wall_normal_the_same_bits_for_any_thread_count() {
+    let text = normal(&cap(120.0, ""));
+    let flat = |s: &Simulation| -> Vec<u64> {
+        let p = &s.particles;
+        p.pos
+            .iter()
+            .chain(&p.vel)
+            .flat_map(|v| v.iter().map(|x| x.to_bits()))
+            .collect()
+    };
+    assert!(flat(&run(&text, 1, 60)) == flat(&run(&text, 2, 60)));
+}
+
+#[test]
+fn the_wall_normal_needs_the_surface_force() {
+    let text = normal(&cap(60.0, "")).replace("\"surface_force\"", "\"surface_stress\"");
+    let e = error_of(&text);
+    assert!(e.contains("effects.surface_force_walls"), "{e}");
 }
 
 #[test]

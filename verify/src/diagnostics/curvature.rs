@@ -13,7 +13,7 @@
 //! the band's threshold (the part of `∫|∇c|` left out).
 
 use super::sphere_cloud::SphereCloud;
-use solver::physics::surface_tension::surface_force::ForceScratch;
+use solver::physics::surface_tension::surface_force::{ForceScratch, Walls};
 use solver::state::Vec3;
 
 /// The curvature of one sphere.
@@ -39,7 +39,7 @@ pub fn sphere(r_over_l0: f64, re_over_l0: f64, jitter_over_l0: f64) -> SphereCur
         &cloud.input(),
         2,
         |a, b| if a != b { 1.0 } else { 0.0 },
-        None,
+        Walls::Absent,
     );
     let (mut weight, mut m1, mut m2, mut inward) = (0.0, 0.0, 0.0, 0.0);
     for ((x, f), k) in cloud

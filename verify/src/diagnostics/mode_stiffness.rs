@@ -19,7 +19,7 @@
 //! With the exact inertia, the period would be off by `(k/k_exact)^(−1/2) − 1`.
 
 use super::sphere_cloud::SphereCloud;
-use solver::physics::surface_tension::surface_force::ForceScratch;
+use solver::physics::surface_tension::surface_force::{ForceScratch, Walls};
 use solver::physics::surface_tension::surface_stress::StressScratch;
 use solver::state::Vec3;
 
@@ -88,7 +88,7 @@ fn generalised_force(model: Continuum, r: f64, re: f64, jitter: f64, eps: f64, b
         Continuum::SurfaceForce => {
             let mut s = ForceScratch::default();
             s.band_gradient_times_r_e = band;
-            s.evaluate(&cloud.input(), 2, sigma, None);
+            s.evaluate(&cloud.input(), 2, sigma, Walls::Absent);
             s.force
         }
         Continuum::SurfaceStress => {

@@ -17,23 +17,28 @@
 //!   which `n` does not change), positive for a drop of `b` in `a`;
 //! - the force `F_i = V_i σ_ab κ_i g_i` [N].
 //!
-//! With walls, their solid is a third phase of the split (two liquids and one solid): each
-//! liquid's share comes from the tensions of its interfaces with the other liquid and with the
-//! solid, the latter from Young's relation with the liquid's contact angle, and the solid's own
-//! share is no term (a rigid wall's area does not change). Wall particles take part in the
-//! colour gradients, normals and curvatures of the liquids' terms; no force acts on them.
+//! Walls take part in one of two ways ([`Walls`]). In the shares' (the default), their solid
+//! is a third phase of the split (two liquids and one solid): each liquid's share comes from
+//! the tensions of its interfaces with the other liquid and with the solid, the latter from
+//! Young's relation with the liquid's contact angle, and the solid's own share is no term (a
+//! rigid wall's area does not change). Wall particles take part in the colour gradients,
+//! normals and curvatures of the liquids' terms; no force acts on them. In the wall normal's
+//! ([`wall_normal`]), the walls are no phase: the pair's term runs over the fluid, and its
+//! normals near a wall are turned to the contact angle's.
 //!
 //! Not a pair form: linear momentum is conserved only as far as `κ` is uniform on a closed
 //! interface. The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
 //! gathers over each wall particle's list: the bits do not depend on the thread count.
 
 pub mod contact_line;
+pub mod wall_normal;
 
 use super::surface_stress::StressInput;
 use crate::kernel::Kernel;
 use crate::physics::forces::pairs_once::{each_pair_once, Reactions, Spills};
 use crate::state::Vec3;
 use rayon::prelude::*;
+use wall_normal::WallNormal;
 
 /// The band's threshold on `|∇c| r_e` [-]. The 2D prototypes' `|∇c| h_c > 0.1` (0.2 here)
 /// left about 4 % of a sphere's `∫|∇c|` out at every resolution, and the convergence case's
@@ -64,7 +69,20 @@ pub struct ForceScratch {
     pub interface_energy_j: f64,
     /// Its share per fluid particle [J].
     energy: Vec<f64>,
+    /// The wall's normal and distance [m] per fluid particle (the wall normal's treatment).
+    wall_geometry: Vec<(Vec3, f64)>,
     spills: Spills,
+}
+
+/// How the walls take part in the surface force (docs/model.md §4b).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Walls {
+    /// They take none (no walls, or walls that only hold the fluid).
+    Absent,
+    /// Their solid, this phase, is a third phase of the split: Young's shares.
+    Shares(usize),
+    /// They turn the interface's normal to the contact angle ([`wall_normal`]).
+    Normal(WallNormal),
 }
 
 impl Default for ForceScratch {
@@ -78,6 +96,7 @@ impl Default for ForceScratch {
             force: Vec::new(),
             interface_energy_j: 0.0,
             energy: Vec::new(),
+            wall_geometry: Vec::new(),
             spills: Spills::default(),
         }
     }
@@ -86,17 +105,30 @@ impl Default for ForceScratch {
 impl ForceScratch {
     /// Evaluates the forces of the current state: `sigma(a, b)` [N/m] is the tension of the
     /// pair of liquid phases `a ≠ b` (zero: no interface term), `n_liquids` the number of
-    /// liquid phases; `wall`, if the walls take part, their solid's phase, with
-    /// `sigma(a, wall)` the liquid `a`'s tension against it relative to the solid's own
-    /// ([`interface_terms`]). Walls take part only with lists that reach the colour kernel's
-    /// support from the wall side ([`crate::neighbours::NeighbourSearch::walls_reach_far`]).
+    /// liquid phases; `walls` how the walls take part, with `sigma(a, S)` the liquid `a`'s
+    /// tension against their solid `S` relative to the solid's own ([`interface_terms`];
+    /// the wall normal's contact angles come from the same tensions, [`contact_cosine`]).
+    /// Walls take part only with lists that reach the colour kernel's support from the wall
+    /// side ([`crate::neighbours::NeighbourSearch::walls_reach_far`]).
     pub fn evaluate<K: Kernel>(
         &mut self,
         inp: &StressInput<K>,
         n_liquids: usize,
         sigma: impl Fn(usize, usize) -> f64 + Sync,
-        wall: Option<usize>,
+        walls: Walls,
     ) {
+        let wall = match walls {
+            Walls::Shares(solid) => Some(solid),
+            Walls::Absent | Walls::Normal(_) => None,
+        };
+        let normal_walls = match walls {
+            Walls::Normal(w) => {
+                wall_normal::wall_geometry(inp, &mut self.wall_geometry);
+                Some(w)
+            }
+            Walls::Absent | Walls::Shares(_) => None,
+        };
+        let blend_m = wall_normal::BLEND_OVER_SUPPORT * inp.kernel.support_m();
         let n = inp.n_fluid;
         let n_all = if wall.is_some() { inp.pos.len() } else { n };
         self.gradient.resize(n_all, Vec3::zeros());
@@ -111,13 +143,22 @@ impl ForceScratch {
         let band = self.band_gradient_times_r_e / inp.kernel.support_m();
         for (sides, s) in interface_terms(n_liquids, &sigma, wall) {
             interface_gradient(inp, sides, &self.spills, &mut self.gradient);
+            // the walls' contact angle for this term, if they turn its normals
+            let turn = normal_walls
+                .and_then(|w| contact_cosine(sides, &sigma, w.solid, s).map(|c| (c, w.l0_m)));
+            let geometry = &self.wall_geometry;
             // the normal in the band
             self.normal
                 .par_iter_mut()
                 .zip(self.gradient.par_iter())
-                .for_each(|(nrm, g)| {
+                .enumerate()
+                .for_each(|(i, (nrm, g))| {
                     let m = g.norm();
                     *nrm = if m > band { *g / m } else { Vec3::zeros() };
+                    if let (Some((cos_theta, l0_m)), true) = (turn, m > band) {
+                        let (nw, dist_m) = geometry[i];
+                        *nrm = wall_normal::turned(*nrm, nw, dist_m, cos_theta, l0_m, blend_m);
+                    }
                 });
             curvature_sums(inp, &self.normal, &self.spills, &mut self.sums);
             // the walls' share of the energy (their side of the liquid's faces on them)
@@ -126,7 +167,8 @@ impl ForceScratch {
                 .zip(self.gradient[n..].par_iter())
                 .zip(inp.vol[n..n_all].par_iter())
                 .for_each(|((e, g), v)| *e += v * s * g.norm());
-            let (grad, sums) = (&self.gradient, &self.sums);
+            let (grad, sums, normal) = (&self.gradient, &self.sums, &self.normal);
+            let geometry = &self.wall_geometry;
             self.force
                 .par_iter_mut()
                 .zip(self.curvature.par_iter_mut())
@@ -143,11 +185,41 @@ impl ForceScratch {
                         return;
                     }
                     *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
-                    *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
+                                     // where the walls turn the normal, the component along the wall's
+                                     // normal follows the turned normal (the fluid's own gradient leans away
+                                     // from the wall there)
+                    let along = match turn {
+                        Some(_) if geometry[i].0 != Vec3::zeros() => {
+                            let nw = geometry[i].0;
+                            g - nw * g.dot(&nw) + nw * (normal[i].dot(&nw) * g.norm())
+                        }
+                        _ => g,
+                    };
+                    *f += along * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
                 });
         }
         // a fixed-order sum: the same bits for any thread count
         self.interface_energy_j = self.energy.iter().sum();
+    }
+}
+
+/// The cosine of the contact angle, measured in side A, at which the interface term `sides`
+/// (tension `s` [N/m]) meets the walls of solid `solid`: Young's
+/// `cos θ = (σ_BS − σ_AS)/σ_AB`, clipped to [−1, 1] (`sigma(a, solid)` holds each liquid's
+/// tension against the solid up to the solid's own, which cancels). `None` for a liquid
+/// against all the others (the three-liquid split, which has no walls).
+pub fn contact_cosine(
+    sides: Sides,
+    sigma: &impl Fn(usize, usize) -> f64,
+    solid: usize,
+    s: f64,
+) -> Option<f64> {
+    match sides {
+        Sides::Pair(a, b) => {
+            let (a, b) = (a as usize, b as usize);
+            Some(((sigma(b, solid) - sigma(a, solid)) / s).clamp(-1.0, 1.0))
+        }
+        Sides::Phase(_) => None,
     }
 }
 

@@ -106,7 +106,7 @@ pub struct Declared {
 
 /// The continuum model of `run`'s drop in a host, if it is one.
 fn host_model(run: &RunData) -> Option<HostModel> {
-    HostModel::of(run.info.scene.effects.interfacial_tension)
+    HostModel::of(&run.info.scene.effects)
 }
 
 /// Measures the runs (drops have no wall, caps have one; the continuum models' drops have a

@@ -46,7 +46,7 @@ use crate::measure::shape::axial_quadrupole_q2;
 use crate::suite::{Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec};
 use solver::kernel::KernelKind;
 use solver::scene::Setting::Natsui2021;
-use solver::scene::{BodyShape, TensionModel, WallBoundary, WallShape};
+use solver::scene::{BodyShape, Effects, SurfaceForceWalls, TensionModel, WallBoundary, WallShape};
 use solver::Simulation;
 use std::f64::consts::SQRT_2;
 use std::path::Path;
@@ -116,6 +116,8 @@ const CSS_H_OVER_L0: f64 = 1.3;
 pub struct HostModel {
     /// The scene's tension model.
     pub model: TensionModel,
+    /// How its walls take part (the surface force's; the drops have none).
+    pub walls: SurfaceForceWalls,
     /// The prefix of its run ids and figures.
     pub id: &'static str,
     /// The prefix of its metrics' labels.
@@ -130,6 +132,7 @@ pub struct HostModel {
 pub const HOST_MODELS: [HostModel; 2] = [
     HostModel {
         model: TensionModel::SurfaceStress,
+        walls: SurfaceForceWalls::Shares,
         id: "css",
         label: "surface-stress drop",
         name: "surface stress",
@@ -137,6 +140,7 @@ pub const HOST_MODELS: [HostModel; 2] = [
     },
     HostModel {
         model: TensionModel::SurfaceForce,
+        walls: SurfaceForceWalls::Shares,
         id: "csf",
         label: "surface-force drop",
         name: "surface force",
@@ -144,10 +148,27 @@ pub const HOST_MODELS: [HostModel; 2] = [
     },
 ];
 
+/// The surface force with the wall normal's walls (docs/model.md §4b): its caps only (its
+/// drops, without walls, are the surface force's).
+pub const WALL_NORMAL: HostModel = HostModel {
+    model: TensionModel::SurfaceForce,
+    walls: SurfaceForceWalls::Normal,
+    id: "csfn",
+    label: "surface-force (wall normal) drop",
+    name: "surface force (wall normal)",
+    section: "§4b",
+};
+
+/// The surface force's two treatments of walls, whose caps the case runs.
+pub const CAP_MODELS: [HostModel; 2] = [HOST_MODELS[1], WALL_NORMAL];
+
 impl HostModel {
-    /// The continuum model of a scene's tension model, if it is one.
-    pub fn of(model: TensionModel) -> Option<HostModel> {
-        HOST_MODELS.into_iter().find(|m| m.model == model)
+    /// The continuum model of a scene's effects, if it is one.
+    pub fn of(e: &Effects) -> Option<HostModel> {
+        HOST_MODELS
+            .into_iter()
+            .chain([WALL_NORMAL])
+            .find(|m| m.model == e.interfacial_tension && m.walls == e.surface_force_walls)
     }
 }
 
@@ -239,9 +260,10 @@ fn cap_id(theta_deg: f64, n: f64) -> String {
     format!("cap_{theta_deg:.0}_n{n:.0}")
 }
 
-/// Run id of the surface force's cap at `theta_deg` with `n` spacings per radius.
-fn csf_cap_id(theta_deg: f64, n: f64) -> String {
-    format!("{}_{}", HOST_MODELS[1].id, cap_id(theta_deg, n))
+/// Run id of the cap of `m` (one of [`CAP_MODELS`]) at `theta_deg` with `n` spacings per
+/// radius.
+fn csf_cap_id(m: &HostModel, theta_deg: f64, n: f64) -> String {
+    format!("{}_{}", m.id, cap_id(theta_deg, n))
 }
 
 fn drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
@@ -337,7 +359,7 @@ fn cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
 /// radius square and [`CAP_BOX_HEIGHT_OVER_R`] R high above the plate, which spans the box
 /// (the host at the top meets the plate's underside), at the continuum drops' kernel and a
 /// sound speed for which the cap's Laplace pressure compresses it by 1 %.
-fn csf_cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
+fn csf_cap_scene(f: Fidelity, m: &HostModel, theta_deg: f64, n: f64) -> solver::Scene {
     let l0 = RADIUS_M / n;
     let half = (PLATE_RADIUS_M / l0).round() * l0;
     let top = (CAP_BOX_HEIGHT_OVER_R * n).round() * l0;
@@ -349,7 +371,8 @@ fn csf_cap_scene(f: Fidelity, theta_deg: f64, n: f64) -> solver::Scene {
             Natsui2021.re_over_l0(),
         )
         .paper_effects()
-        .tension_model(HOST_MODELS[1].model)
+        .tension_model(m.model)
+        .surface_force_walls(m.walls)
         .liquid(&VISCOUS_MATTE)
         .gas(&CAP_HOST)
         .interface(MATTE.name, CAP_HOST.name, MATTE.surface_tension_n_m)
@@ -427,11 +450,14 @@ impl Case for Convergence {
                 snapshot_times_s: vec![],
             })
         });
-        let csf_caps = d.angles_deg.iter().flat_map(|&theta| {
-            d.caps.iter().map(move |&n| RunSpec {
-                id: csf_cap_id(theta, n),
-                scene: csf_cap_scene(f, theta, n),
-                snapshot_times_s: vec![],
+        let (angles, resolutions) = (&d.angles_deg, &d.caps);
+        let csf_caps = CAP_MODELS.iter().flat_map(|m| {
+            angles.iter().flat_map(move |&theta| {
+                resolutions.iter().map(move |&n| RunSpec {
+                    id: csf_cap_id(m, theta, n),
+                    scene: csf_cap_scene(f, m, theta, n),
+                    snapshot_times_s: vec![],
+                })
             })
         });
         let css_drops = HOST_MODELS.iter().flat_map(|m| {
@@ -519,14 +545,14 @@ mod tests {
             assert_eq!(
                 runs.len(),
                 d.drops.len()
-                    + 2 * d.caps.len() * d.angles_deg.len()
+                    + (1 + CAP_MODELS.len()) * d.caps.len() * d.angles_deg.len()
                     + HOST_MODELS.len() * d.css_drops.len()
             );
             for r in &runs {
                 let walls = !r.scene.walls.is_empty();
                 assert_eq!(walls, r.id.contains("cap_"), "{}", r.id);
                 assert!(r.scene.effects.gravity.is_none(), "{}: zero gravity", r.id);
-                let model = HostModel::of(r.scene.effects.interfacial_tension);
+                let model = HostModel::of(&r.scene.effects);
                 let css = model.is_some();
                 let id = model.map(|m| format!("{}_", m.id));
                 assert_eq!(css, id.is_some_and(|p| r.id.starts_with(&p)), "{}", r.id);

@@ -162,6 +162,12 @@ impl SceneBuilder {
         self
     }
 
+    /// How walls take part in the surface force: Young's shares or the wall normal.
+    pub fn surface_force_walls(mut self, walls: solver::scene::SurfaceForceWalls) -> Self {
+        self.scene.effects.surface_force_walls = walls;
+        self
+    }
+
     /// The short-range liquid–wall repulsion on or off.
     pub fn wall_repulsion(mut self, on: bool) -> Self {
         self.scene.effects.wall_repulsion = on;

@@ -13,7 +13,8 @@
 //! tensions by the share; with that, the same cap sits at 60.9° by its height and 59.2° by
 //! its foot.
 
-use super::ForceScratch;
+use super::wall_normal::WallNormal;
+use super::{ForceScratch, Walls};
 use crate::kernel::Kernel;
 use crate::neighbours::NeighbourSearch;
 use crate::periodic::PeriodicBox;
@@ -41,6 +42,8 @@ pub struct Channel {
     width_y_m: f64,
     /// The colour kernel's second moment on the lattice [-] ([`crate::physics::surface_tension::lattice_cloud::second_moment`]).
     moment: f64,
+    /// The lattice spacing [m].
+    l0_m: f64,
 }
 
 impl Channel {
@@ -73,18 +76,21 @@ impl Channel {
             half_window_m: (2 * reach) as f64 * l0_m,
             width_y_m: ny as f64 * l0_m,
             moment: crate::physics::surface_tension::lattice_cloud::second_moment(colour, l0_m),
+            l0_m,
         }
     }
 
     /// The surface force on the channel: the liquid's surface tension `sigma_n_m` [N/m]
     /// against the gas, its tension against the walls' solid `−σ cos θ` times `young_factor`
-    /// [-] (the model's calibration; 1 for none).
+    /// [-] (the model's calibration; 1 for none); the walls as a phase of the split, or, if
+    /// `turn_normals`, as the wall normal's condition ([`super::wall_normal`]).
     pub fn evaluate<K: Kernel>(
         &self,
         colour: K,
         sigma_n_m: f64,
         cos_theta: f64,
         young_factor: f64,
+        turn_normals: bool,
     ) -> ForceScratch {
         let young = -sigma_n_m * cos_theta * young_factor;
         let tension = move |a: usize, b: usize| match (a.min(b) as u8, a.max(b) as u8) {
@@ -92,13 +98,16 @@ impl Channel {
             (LIQUID, SOLID) => young,
             _ => 0.0,
         };
+        let walls = if turn_normals {
+            Walls::Normal(WallNormal {
+                solid: SOLID as usize,
+                l0_m: self.l0_m,
+            })
+        } else {
+            Walls::Shares(SOLID as usize)
+        };
         let mut s = ForceScratch::default();
-        s.evaluate(
-            &self.cloud.stress_input(colour),
-            2,
-            tension,
-            Some(SOLID as usize),
-        );
+        s.evaluate(&self.cloud.stress_input(colour), 2, tension, walls);
         s
     }
 
@@ -120,14 +129,16 @@ impl Channel {
 }
 
 /// The share of Young's push that the uncalibrated surface force hands to the fluid at a
-/// contact line [-]: the channel's push at 60° over the energy's. The push is linear in
-/// `cos θ` (the liquid's and the gas's shares differ by `−σ cos θ`, and at 90° the push
-/// cancels by symmetry), so one angle measures it; 1/share is the model's factor on the
+/// contact line [-]: the channel's push at 60° over the energy's, with the walls as a phase of
+/// the split or, if `turn_normals`, as the wall normal's condition. In the split the push is
+/// linear in `cos θ` (the liquid's and the gas's shares differ by `−σ cos θ`, and at 90° the
+/// push cancels by symmetry), so one angle measures it; the wall normal's share varies by
+/// about 2 % over 15°–150° (docs/findings.md). 1/share is the model's factor on the
 /// liquid–solid tensions.
-pub fn young_share<K: Kernel>(colour: K, l0_m: f64) -> f64 {
+pub fn young_share<K: Kernel>(colour: K, l0_m: f64, turn_normals: bool) -> f64 {
     const COS_THETA: f64 = 0.5; // 60°: any angle off 90° gives the same ratio
     const SIGMA_N_M: f64 = 1.0; // the ratio does not depend on it
     let channel = Channel::new(&colour, l0_m);
-    let s = channel.evaluate(colour, SIGMA_N_M, COS_THETA, 1.0);
+    let s = channel.evaluate(colour, SIGMA_N_M, COS_THETA, 1.0, turn_normals);
     channel.push_n(&s) / channel.energy_push_n(SIGMA_N_M, COS_THETA)
 }

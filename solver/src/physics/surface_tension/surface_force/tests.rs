@@ -10,7 +10,12 @@ use crate::physics::surface_tension::test_cloud::{
 
 fn evaluate(c: &Cloud) -> ForceScratch {
     let mut s = ForceScratch::default();
-    s.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 }, None);
+    s.evaluate(
+        &c.input(),
+        2,
+        |a, b| if a != b { SIGMA } else { 0.0 },
+        Walls::Absent,
+    );
     s
 }
 
@@ -151,9 +156,19 @@ fn the_liquids_shares_give_the_pairs_force_where_two_liquids_meet() {
         PeriodicBox::OPEN,
     );
     let mut pair = ForceScratch::default();
-    pair.evaluate(&c.input(), 2, |a, b| if a != b { SIGMA } else { 0.0 }, None);
+    pair.evaluate(
+        &c.input(),
+        2,
+        |a, b| if a != b { SIGMA } else { 0.0 },
+        Walls::Absent,
+    );
     let mut shares = ForceScratch::default();
-    shares.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA), None);
+    shares.evaluate(
+        &c.input(),
+        3,
+        three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA),
+        Walls::Absent,
+    );
     let scale = pair.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
     assert!(scale > 0.0);
     let worst = pair
@@ -177,7 +192,12 @@ fn three_flat_layers_have_no_curvature_and_no_force() {
     ]);
     let c = cloud(lattice([10, 10, 30]), |x| (x.z / (10.0 * L0)) as u8, b);
     let mut s = ForceScratch::default();
-    s.evaluate(&c.input(), 3, three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA), None);
+    s.evaluate(
+        &c.input(),
+        3,
+        three(SIGMA, 0.7 * SIGMA, 0.9 * SIGMA),
+        Walls::Absent,
+    );
     // as the two-liquid flat test: every normal is ±z up to its lattice sum's round-off
     let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
     assert!(force_max < 1e-12 * SIGMA * L0, "{force_max:e} N");

@@ -1,0 +1,129 @@
+//! The walls as a condition on the interface's normal (Breinlinger et al. 2013; docs/model.md
+//! §4b): the surface force's second treatment of walls. The walls are no phase of the split:
+//! the liquid|liquid term's colour gradients and curvatures run over the fluid only, and near a
+//! wall each band particle's normal is turned towards the one that meets the wall at the
+//! contact angle,
+//!
+//! `n_θ = t sin θ + n_w cos θ`,
+//!
+//! with `n_w` the wall's unit normal into the fluid and `t` the unit tangent of the wall that the
+//! particle's own normal leans to (from side A, whose angle θ is, towards side B). The turned
+//! normal is `f n + (1 − f) n_θ`, normalised, with `f = (d_w − l0)/h_c` clipped to [0, 1]:
+//! `d_w` the particle's distance from the nearest wall particle along `n_w` (the first fluid
+//! layer, `l0` from the wall's top layer, takes `n_θ` whole) and `h_c = r_e/2` the colour
+//! kernel's smoothing length. An interface that meets the wall off θ then bends within `h_c` of
+//! it, and that curvature pushes the contact line along the wall as Young's unbalanced tension
+//! would. The force `σ κ g` keeps the fluid's own gradient `g` along the wall, and takes its
+//! component along the wall's normal from the turned normal (`|g| n·n_w`): the fluid's gradient
+//! leans away from the wall there (the kernel finds no fluid beyond it), and along it a convex
+//! foot was pushed into the wall (a 120° cap at R/l0 = 8: 52 of its 1,088 particles below the
+//! plate's top). Along the turned normal entirely, the push along the wall would fall with the
+//! angle's sine (0.68 of Young's at 15°, 0.86 at 60°: docs/findings.md). No liquid face meets a wall face, so the corner that gives the shares' treatment its
+//! line tension (`−0.34 σ r_e`) is not there: on the lattice column the line tension left is
+//! `−0.03 σ r_e` (docs/findings.md).
+
+use super::super::surface_stress::StressInput;
+use crate::kernel::Kernel;
+use crate::state::Vec3;
+use rayon::prelude::*;
+
+/// The blend's width over the colour kernel's support [-]: `h_c = r_e/2`, Wendland C2's
+/// smoothing length (Breinlinger et al. 2013 blend over the smoothing length). On the lattice
+/// channel, a quarter of the support hands the fluid 0.75 of Young's push, a half 0.885, the
+/// whole support 0.95 (docs/findings.md); the model calibrates whichever share it is.
+pub const BLEND_OVER_SUPPORT: f64 = 0.5;
+
+/// What the wall normal's treatment needs of the model.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WallNormal {
+    /// The walls' solid's phase.
+    pub solid: usize,
+    /// The lattice spacing `l0` [m].
+    pub l0_m: f64,
+}
+
+/// The wall's unit normal into the fluid and the distance [m] along it to the nearest wall
+/// particle, per fluid particle, into `out` (a zero normal where no wall particle is within the
+/// colour kernel's support): `n_w = −Σ_w V_w ∇_i W_c(r_iw)`, normalised, over the particle's wall
+/// neighbours, in list order (the same bits for any thread count).
+pub fn wall_geometry<K: Kernel>(inp: &StressInput<K>, out: &mut Vec<(Vec3, f64)>) {
+    let n = inp.n_fluid;
+    out.clear();
+    out.resize(n, (Vec3::zeros(), 0.0));
+    let cut = inp.kernel.support_m();
+    out.par_iter_mut().enumerate().for_each(|(i, o)| {
+        let pi = inp.pos[i];
+        let mut sum = Vec3::zeros();
+        for j in inp.lists.all(i).filter(|&j| j >= n) {
+            let d = inp.lists.delta(pi, inp.pos[j]);
+            let r = d.norm();
+            if r < cut && r > 0.0 {
+                sum -= d * (inp.kernel.dw_dr(r) / r * inp.vol[j]);
+            }
+        }
+        let m = sum.norm();
+        if m == 0.0 {
+            return;
+        }
+        let nw = sum / m;
+        let mut dist = f64::INFINITY;
+        for j in inp.lists.all(i).filter(|&j| j >= n) {
+            let d = inp.lists.delta(pi, inp.pos[j]);
+            if d.norm() < cut {
+                dist = dist.min(d.dot(&nw));
+            }
+        }
+        *o = (nw, dist);
+    });
+}
+
+/// The normal `n` (unit, from side A into side B) of a band particle at distance `dist_m` [m]
+/// along the wall's normal `nw` (unit, into the fluid; zero: no wall near), turned towards the
+/// one that meets the wall at the angle whose cosine is `cos_theta` (measured in side A), over
+/// the blend `blend_m` [m] beyond the lattice spacing `l0_m` [m]. Unchanged where no wall is
+/// near, beyond the blend, or where `n` is along `nw` (an interface parallel to the wall has no
+/// contact line).
+#[inline]
+pub fn turned(n: Vec3, nw: Vec3, dist_m: f64, cos_theta: f64, l0_m: f64, blend_m: f64) -> Vec3 {
+    if nw == Vec3::zeros() {
+        return n;
+    }
+    let f = ((dist_m - l0_m) / blend_m).clamp(0.0, 1.0);
+    if f == 1.0 {
+        return n;
+    }
+    let t = n - nw * n.dot(&nw);
+    let tm = t.norm();
+    if tm < 1e-9 {
+        return n;
+    }
+    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
+    let n_theta = t * (sin_theta / tm) + nw * cos_theta;
+    let m = n * f + n_theta * (1.0 - f);
+    m / m.norm()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const L0: f64 = 1e-4;
+
+    #[test]
+    fn the_first_layer_takes_the_contact_angles_normal_and_the_blend_ends_at_h_c() {
+        let nw = Vec3::z();
+        let n = Vec3::new(1.0, 0.0, 1.0).normalize(); // the interface meets the wall at 45°
+        let cos60 = 0.5;
+        let first = turned(n, nw, L0, cos60, L0, 2.0 * L0);
+        let expected = Vec3::new(60f64.to_radians().sin(), 0.0, cos60);
+        assert!((first - expected).norm() < 1e-15, "{first}");
+        // beyond l0 + h_c: unchanged
+        assert_eq!(turned(n, nw, 3.0 * L0, cos60, L0, 2.0 * L0), n);
+        // half way: the normalised mean of the two
+        let half = turned(n, nw, 2.0 * L0, cos60, L0, 2.0 * L0);
+        assert!((half - (n + expected).normalize()).norm() < 1e-15, "{half}");
+        // no wall near, or an interface parallel to the wall: unchanged
+        assert_eq!(turned(n, Vec3::zeros(), L0, cos60, L0, 2.0 * L0), n);
+        assert_eq!(turned(Vec3::z(), nw, L0, cos60, L0, 2.0 * L0), Vec3::z());
+    }
+}

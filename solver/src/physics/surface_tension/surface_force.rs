@@ -185,15 +185,9 @@ impl ForceScratch {
                         return;
                     }
                     *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
-                                     // where the walls turn the normal, the component along the wall's
-                                     // normal follows the turned normal (the fluid's own gradient leans away
-                                     // from the wall there)
                     let along = match turn {
-                        Some(_) if geometry[i].0 != Vec3::zeros() => {
-                            let nw = geometry[i].0;
-                            g - nw * g.dot(&nw) + nw * (normal[i].dot(&nw) * g.norm())
-                        }
-                        _ => g,
+                        Some(_) => wall_normal::force_direction(g, normal[i], geometry[i].0),
+                        None => g,
                     };
                     *f += along * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
                 });

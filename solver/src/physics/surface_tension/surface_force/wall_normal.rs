@@ -103,6 +103,18 @@ pub fn turned(n: Vec3, nw: Vec3, dist_m: f64, cos_theta: f64, l0_m: f64, blend_m
     m / m.norm()
 }
 
+/// The direction and size of the force density [1/m] at a band particle whose colour gradient
+/// is `g` [1/m] and turned normal `n` (unit), with the wall's normal `nw` (unit, into the fluid;
+/// zero: no wall near): `g` along the wall, `|g| n·n_w` across it. Where `n` is not turned
+/// (no wall near, or beyond the blend) it is `g` (up to round-off).
+#[inline]
+pub fn force_direction(g: Vec3, n: Vec3, nw: Vec3) -> Vec3 {
+    if nw == Vec3::zeros() {
+        return g;
+    }
+    g - nw * g.dot(&nw) + nw * (n.dot(&nw) * g.norm())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -125,5 +137,19 @@ mod tests {
         // no wall near, or an interface parallel to the wall: unchanged
         assert_eq!(turned(n, Vec3::zeros(), L0, cos60, L0, 2.0 * L0), n);
         assert_eq!(turned(Vec3::z(), nw, L0, cos60, L0, 2.0 * L0), Vec3::z());
+    }
+
+    #[test]
+    fn the_force_keeps_the_gradient_along_the_wall_and_the_turned_normal_across_it() {
+        let nw = Vec3::z();
+        // a gradient leaning away from the wall (as a truncated kernel's does) at 120°
+        let g = Vec3::new(2.0, 0.0, 1.0);
+        let n = Vec3::new(120f64.to_radians().sin(), 0.0, 120f64.to_radians().cos());
+        let f = force_direction(g, n, nw);
+        let expected = Vec3::new(2.0, 0.0, g.norm() * n.z);
+        assert!((f - expected).norm() < 1e-15, "{f}");
+        // no wall: the gradient itself; an unturned normal (n = g/|g|): the gradient too
+        assert_eq!(force_direction(g, n, Vec3::zeros()), g);
+        assert!((force_direction(g, g.normalize(), nw) - g).norm() < 1e-15);
     }
 }

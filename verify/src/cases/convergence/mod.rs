@@ -427,7 +427,7 @@ impl Case for Convergence {
         let why = match f {
             Fidelity::Smoke => "seconds per run: that the case runs and fits",
             Fidelity::Standard => {
-                "the potential's runs about 45 min of one thread in all (measured twice, 40 and 44 min, each run on one thread beside another: the drops 0.5, 4–5 and 16–20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min); the continuum models' drops, host included (27,000, 74,088 and 216,000 particles), on two threads: the surface stress's 4, 10 and 88 min beside other work, the surface force's 2, 10 (beside builds) and 29 min; the surface force's caps, host included (20,736, 50,688 and 156,800 liquid particles), on one thread beside two other runs: 4–5 min at 8 spacings per radius, 21–22 min at 11, and at 16 about 2 h"
+                "the potential's runs about 45 min of one thread in all (measured twice, 40 and 44 min, each run on one thread beside another: the drops 0.5, 4–5 and 16–20 min, the caps 12–18 s, 45–63 s and 4.4–6.7 min); the continuum models' drops, host included (27,000, 74,088 and 216,000 particles), on two threads: the surface stress's 4, 10 and 88 min beside other work, the surface force's 2, 10 (beside builds) and 29 min; the surface force's caps, host included (20,736, 50,688 and 156,800 liquid particles), on one thread beside two other runs: 4–5 min at 8 spacings per radius, 21–22 min at 11, and at 16 about 2 h; with the wall normal's walls 5 min at 8 and 20 min at 11, each on one thread beside another run"
             }
             Fidelity::Paper => "one finer point of each beyond standard",
         };

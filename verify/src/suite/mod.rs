@@ -28,9 +28,10 @@ pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
     /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes about
-    /// 11.1 h — the committed runs' own wall times: 8.7 h of one thread for the runs made on one
-    /// thread (4.4 h on 2 cores, two runs at a time) and 2.4 h on two threads for the six drops
-    /// under the continuum models; finished runs are reused, so `all` then only re-reports.
+    /// 15 h — the 117 committed runs' own wall times, 15.1 h: 9.5 h of them runs on one thread
+    /// (two at a time on 2 cores), the rest on two threads (the continuum models' six drops and
+    /// finest caps); finished runs are reused, so `all` then only re-reports (docs/findings.md
+    /// lists the caps not run yet).
     Standard,
     /// The papers' particle counts and time steps.
     Paper,

@@ -65,18 +65,22 @@ fn the_shares_of_two_liquids_on_a_wall_follow_young() {
     );
 }
 
-#[test]
-fn a_liquid_layer_on_a_wall_has_no_force_and_the_energy_of_its_faces() {
-    // periodic 10 × 10 columns: the wall's five layers below z = 0, the liquid up to 10 l0, the
-    // gas up to 20 l0, empty space above (no phase: no term)
+/// Periodic 10 × 10 columns: the wall's five layers below z = 0, the liquid up to 10 l0, the
+/// gas up to 20 l0, empty space above (no phase: no term).
+fn liquid_layer_on_wall() -> Cloud {
     let b = PeriodicBox::new([Some([0.0, 10.0 * L0]), Some([0.0, 10.0 * L0]), None]);
-    let c = cloud_with_walls(
+    cloud_with_walls(
         slab(10, 10, 0, 20),
         |x| u8::from(x.z > 10.0 * L0),
         slab(10, 10, -5, 0),
         WALL as u8,
         b,
-    );
+    )
+}
+
+#[test]
+fn a_liquid_layer_on_a_wall_has_no_force_and_the_energy_of_its_faces() {
+    let c = liquid_layer_on_wall();
     let s = evaluate(&c, 60.0);
     // every band normal is ±z up to its lattice sum's round-off, as on a flat liquid interface
     let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
@@ -200,14 +204,7 @@ fn a_contact_line_has_a_negative_line_tension_of_the_colour_kernels_reach() {
 fn with_the_wall_normal_a_liquid_layer_on_a_wall_has_no_force_and_only_its_free_face() {
     // as the shares' layer test: every normal is ±z, parallel to the wall's, so none is turned;
     // the walls are no phase, so the liquid's face on them has no term
-    let b = PeriodicBox::new([Some([0.0, 10.0 * L0]), Some([0.0, 10.0 * L0]), None]);
-    let c = cloud_with_walls(
-        slab(10, 10, 0, 20),
-        |x| u8::from(x.z > 10.0 * L0),
-        slab(10, 10, -5, 0),
-        WALL as u8,
-        b,
-    );
+    let c = liquid_layer_on_wall();
     let s = evaluate_with(&c, 60.0, NORMAL);
     let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
     assert!(force_max < 1e-12 * SIGMA * L0, "{force_max:e} N");

@@ -28,7 +28,7 @@ pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
     /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes about
-    /// 15 h — the 117 committed runs' own wall times, 15.1 h: 9.5 h of them runs on one thread
+    /// 15 h — the 118 committed runs' own wall times, 15.4 h: 9.8 h of them runs on one thread
     /// (two at a time on 2 cores), the rest on two threads (the continuum models' six drops and
     /// finest caps); finished runs are reused, so `all` then only re-reports (docs/findings.md
     /// lists the caps not run yet).

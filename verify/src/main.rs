@@ -42,7 +42,15 @@ fn main() {
             sample_steps,
             threads,
         } => exit_of(check_scene(&scene, strict, sample_steps, threads)),
-        Command::Case { names, suite } => exit_of(run_suite(&suite.options(), Some(&names), None)),
+        Command::Case {
+            names,
+            suite,
+            compare,
+        } => exit_of(run_suite(
+            &suite.options(),
+            Some(&names),
+            compare.as_deref(),
+        )),
         Command::All { suite, compare } => {
             exit_of(run_suite(&suite.options(), None, compare.as_deref()))
         }

@@ -385,8 +385,9 @@ fn compare_flags_a_worse_metric_and_the_cli_exits_4() {
         .quiet()
         .unwrap();
     assert!(st.success());
+    // the case's rows only: the baseline's other cases did not run here
     let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
-        .args(["all", "--fidelity", "smoke", "--out"])
+        .args(["case", "cube_drop", "--fidelity", "smoke", "--out"])
         .arg(&out)
         .arg("--compare")
         .arg(&base)
@@ -401,7 +402,7 @@ fn compare_flags_a_worse_metric_and_the_cli_exits_4() {
     assert!(String::from_utf8_lossy(&st.stderr).contains("period (Q4) c²=150"));
     // against its own summary nothing is worse
     let st = std::process::Command::new(env!("CARGO_BIN_EXE_verify"))
-        .args(["all", "--fidelity", "smoke", "--out"])
+        .args(["case", "cube_drop", "--fidelity", "smoke", "--out"])
         .arg(&out)
         .arg("--compare")
         .arg(out.join("summary.csv"))

@@ -142,6 +142,10 @@ pub(crate) enum Command {
         names: Vec<String>,
         #[command(flatten)]
         suite: SuiteArgs,
+        /// Compare the named cases with their rows of a baseline summary.csv; exit with code 4
+        /// if any metric is worse.
+        #[arg(long, value_name = "BASELINE.csv")]
+        compare: Option<PathBuf>,
     },
     /// Run every case and write OUT/summary.md.
     All {

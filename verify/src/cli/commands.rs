@@ -12,6 +12,7 @@ use verify::preflight;
 use verify::report::summary;
 use verify::run::{self, load_scene, run_scene, RunOptions};
 use verify::study::{run_all, StudyOptions};
+use verify::suite::compare::Baseline;
 use verify::suite::runner::{self, SuiteOptions};
 use verify::suite::Fidelity;
 
@@ -129,6 +130,7 @@ pub(crate) fn run_suite(
             case.name()
         );
     }
+    let baseline = baseline.map(|path| Baseline { path, cases: names });
     let regressions = summary::write_all(&opts.out, opts.fidelity, &cases, baseline)?;
     eprintln!("{}", tally.describe());
     eprintln!(

@@ -3,7 +3,7 @@
 //! revision) and `costs.csv` (each metric's run's wall time), from every case measured so far.
 
 use super::known_misses;
-use crate::suite::compare::{self, summary_csv, Regression};
+use crate::suite::compare::{self, summary_csv, Baseline, Regression};
 use crate::suite::{runner, Case, Fidelity, Metric};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -14,7 +14,7 @@ pub fn write_all(
     out: &Path,
     fidelity: Fidelity,
     cases: &[Box<dyn Case>],
-    baseline: Option<&Path>,
+    baseline: Option<Baseline>,
 ) -> anyhow::Result<Option<Vec<Regression>>> {
     let metrics = runner::saved_metrics(out, cases)?;
     let regressions = match baseline {

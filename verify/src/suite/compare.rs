@@ -5,7 +5,8 @@
 //! same build any change is real; the quarter-tolerance margin absorbs compiler and platform
 //! differences in the last bits, which move these metrics by far less. Metrics without a
 //! reference, and metrics the baseline could not measure, are not judged. A metric of the
-//! baseline that is no longer produced regresses too.
+//! baseline that is no longer produced regresses too. `verify case NAMES --compare` judges the
+//! named cases' rows only.
 
 pub mod summary_csv;
 
@@ -24,9 +25,21 @@ pub struct Regression {
     pub message: String,
 }
 
-/// Compares `metrics` with the baseline file; returns the regressions.
-pub fn compare(metrics: &[Metric], baseline: &Path) -> anyhow::Result<Vec<Regression>> {
-    let rows = summary_csv::read(baseline)?;
+/// A baseline `summary.csv` and the cases it is compared on.
+#[derive(Clone, Copy, Debug)]
+pub struct Baseline<'a> {
+    /// The file.
+    pub path: &'a Path,
+    /// The cases whose rows are judged (`None`: every row).
+    pub cases: Option<&'a [String]>,
+}
+
+/// Compares `metrics` with the baseline's rows of its cases; returns the regressions.
+pub fn compare(metrics: &[Metric], baseline: Baseline) -> anyhow::Result<Vec<Regression>> {
+    let mut rows = summary_csv::read(baseline.path)?;
+    if let Some(cases) = baseline.cases {
+        rows.retain(|r| cases.contains(&r.case));
+    }
     Ok(compare_rows(metrics, &rows))
 }
 
@@ -106,5 +119,40 @@ mod tests {
         assert_eq!(compare_rows(&[], &[row(0.02)]).len(), 1);
         // a metric the baseline could not measure is not judged
         assert!(compare_rows(&[metric(f64::NAN)], &[row(f64::NAN)]).is_empty());
+    }
+
+    #[test]
+    fn a_baseline_limited_to_some_cases_judges_their_rows_only() {
+        let dir = std::env::temp_dir().join(format!("compare-cases-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("baseline.csv");
+        let other = Metric::new("d", "m", "ms", 1.0).against(
+            1.0,
+            Tolerance {
+                abs: 0.1,
+                source: "test".into(),
+            },
+        );
+        summary_csv::write(&path, &[metric(1.0), other]).unwrap();
+        // case d did not run: its row is "no longer measured" unless only c is compared
+        let all = compare(
+            &[metric(1.0)],
+            Baseline {
+                path: &path,
+                cases: None,
+            },
+        )
+        .unwrap();
+        assert_eq!(all.len(), 1);
+        assert_eq!(all[0].case, "d");
+        let cases = ["c".to_string()];
+        let only_c = Baseline {
+            path: &path,
+            cases: Some(&cases),
+        };
+        assert!(compare(&[metric(1.0)], only_c).unwrap().is_empty());
+        // and c's own row is still judged
+        assert_eq!(compare(&[metric(1.05)], only_c).unwrap().len(), 1);
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

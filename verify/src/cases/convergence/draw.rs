@@ -12,7 +12,7 @@ use std::path::Path;
 /// Draws every figure of the case and writes `table.md` into `dir`.
 pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
     let mut all: Vec<ErrorSeries> = drop_series(&m.drops, "drop", m.declared.drops).into();
-    all.extend(cap_series(&m.caps, m.declared.caps));
+    all.extend(cap_series(&m.caps, &m.declared));
     all.extend(host_series(m));
     error_against_spacing(&all, dir)?;
     drop_histories(

@@ -1,7 +1,7 @@
 //! The convergence case's metrics: each point against its analytic reference, and each
 //! metric's observed order with the check that its error falls as `l0` is refined.
 
-use super::measure::{CapPoint, DropPoint, Measured};
+use super::measure::{CapPoint, Declared, DropPoint, Measured};
 use super::Series;
 use crate::suite::{Metric, Tolerance};
 
@@ -64,14 +64,22 @@ fn cap_prefix(c: &CapPoint) -> String {
 }
 
 /// The caps' angle errors relative to the typed angle per resolution, one series per model
-/// and angle.
-pub fn cap_series(caps: &[CapPoint], expected: usize) -> Vec<Series> {
-    let mut groups: Vec<(String, f64)> =
-        caps.iter().map(|c| (cap_prefix(c), c.typed_deg)).collect();
+/// and angle, each expecting the resolutions its family declares.
+pub fn cap_series(caps: &[CapPoint], declared: &Declared) -> Vec<Series> {
+    let mut groups: Vec<(String, f64, usize)> = caps
+        .iter()
+        .map(|c| {
+            let expected = match c.host_model {
+                Some(_) => declared.css_caps,
+                None => declared.caps,
+            };
+            (cap_prefix(c), c.typed_deg, expected)
+        })
+        .collect();
     groups.dedup();
     groups
         .into_iter()
-        .map(|(prefix, theta)| Series {
+        .map(|(prefix, theta, expected)| Series {
             label: format!("{prefix} {theta:.0}° (from height)"),
             points: caps
                 .iter()
@@ -95,7 +103,7 @@ pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
     }
     let series = drop_series(&m.drops, "drop", m.declared.drops)
         .into_iter()
-        .chain(cap_series(&m.caps, m.declared.caps))
+        .chain(cap_series(&m.caps, &m.declared))
         .chain(host_series(m));
     for s in series {
         out.extend(order_metrics(case, &s));

@@ -100,8 +100,10 @@ pub struct Declared {
     pub drops: usize,
     /// Each continuum model's drop.
     pub host_drops: usize,
-    /// Each model's cap at each angle.
+    /// The potential's cap at each angle.
     pub caps: usize,
+    /// Each continuum model's cap at each angle.
+    pub css_caps: usize,
 }
 
 /// The continuum model of `run`'s drop in a host, if it is one.
@@ -138,6 +140,7 @@ pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
             drops: d.drops.len(),
             host_drops: d.css_drops.len(),
             caps: d.caps.len(),
+            css_caps: d.css_caps.len(),
         },
     };
     let model_rank = |c: &CapPoint| c.host_model.map(|h| h.id);

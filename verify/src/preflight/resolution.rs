@@ -25,6 +25,10 @@ fn half_thickness_m(shape: &BodyShape, periodic: [bool; 3]) -> Option<f64> {
         BodyShape::Surrounding { .. } => None,
         // its height is its radius
         BodyShape::Hemisphere { radius, .. } => Some(0.5 * radius),
+        // its height is R (1 − cos θ)
+        BodyShape::Cap {
+            radius, angle_deg, ..
+        } => Some(0.5 * radius * (1.0 - angle_deg.to_radians().cos())),
         BodyShape::Shell {
             inner_radius,
             outer_radius,

@@ -71,6 +71,8 @@ pub struct ForceScratch {
     energy: Vec<f64>,
     /// The wall's normal and distance [m] per fluid particle (the wall normal's treatment).
     wall_geometry: Vec<(Vec3, f64)>,
+    /// The wall particles' colour fractions of the two sides (the wall normal's treatment).
+    wall_colour: Vec<(f64, f64)>,
     spills: Spills,
 }
 
@@ -97,6 +99,7 @@ impl Default for ForceScratch {
             interface_energy_j: 0.0,
             energy: Vec::new(),
             wall_geometry: Vec::new(),
+            wall_colour: Vec::new(),
             spills: Spills::default(),
         }
     }
@@ -146,6 +149,15 @@ impl ForceScratch {
             // the walls' contact angle for this term, if they turn its normals
             let turn = normal_walls
                 .and_then(|w| contact_cosine(sides, &sigma, w.solid, s).map(|c| (c, w.l0_m)));
+            // the wall's side of the colour's jump, as of the pressure's
+            if turn.is_some() {
+                wall_normal::complete_with_wall_colour(
+                    inp,
+                    |p| sides.of(p),
+                    &mut self.wall_colour,
+                    &mut self.gradient,
+                );
+            }
             let geometry = &self.wall_geometry;
             // the normal in the band
             self.normal

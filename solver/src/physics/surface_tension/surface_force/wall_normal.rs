@@ -77,6 +77,66 @@ pub fn wall_geometry<K: Kernel>(inp: &StressInput<K>, out: &mut Vec<(Vec3, f64)>
     });
 }
 
+/// Completes each fluid particle's cross-side colour gradient `g` [1/m] (`out`, from
+/// `interface_gradient` over the fluid) with its wall neighbours, as if they held the fluid's
+/// colour extrapolated into the wall: each wall particle takes the Shepard fractions of its
+/// fluid neighbours on side A and side B, `c_w = Σ_f V_f W_c(r_wf) [f on the side] / Σ_f V_f
+/// W_c(r_wf)`, and a fluid particle on side `s` adds `s c_w(other side) V_w ∇_i W_c(r_iw)`. The
+/// wall's pressure is extrapolated likewise (Adami et al. 2012), so the colour's jump and the
+/// pressure's across an interface that meets the wall both see the wall (docs/model.md §4b).
+/// Scratch `colour` holds the wall particles' fractions; the sums run in list order (the same
+/// bits for any thread count).
+pub fn complete_with_wall_colour<K: Kernel>(
+    inp: &StressInput<K>,
+    side_of: impl Fn(u8) -> f64 + Sync,
+    colour: &mut Vec<(f64, f64)>,
+    out: &mut [Vec3],
+) {
+    let n = inp.n_fluid;
+    let cut = inp.kernel.support_m();
+    colour.clear();
+    colour.resize(inp.pos.len() - n, (0.0, 0.0));
+    colour.par_iter_mut().enumerate().for_each(|(k, c)| {
+        let w = n + k;
+        let (mut a, mut b, mut all) = (0.0, 0.0, 0.0);
+        for j in inp.lists.all(w).filter(|&j| j < n) {
+            let r = inp.lists.delta(inp.pos[w], inp.pos[j]).norm();
+            if r >= cut {
+                continue;
+            }
+            let x = inp.vol[j] * inp.kernel.w(r);
+            all += x;
+            match side_of(inp.phase[j]) {
+                s if s > 0.0 => a += x,
+                s if s < 0.0 => b += x,
+                _ => {}
+            }
+        }
+        if all > 0.0 {
+            *c = (a / all, b / all);
+        }
+    });
+    out[..n].par_iter_mut().enumerate().for_each(|(i, g)| {
+        let sign = side_of(inp.phase[i]);
+        if sign == 0.0 {
+            return;
+        }
+        let pi = inp.pos[i];
+        for j in inp.lists.all(i).filter(|&j| j >= n) {
+            let (ca, cb) = colour[j - n];
+            let across = if sign > 0.0 { cb } else { ca };
+            if across == 0.0 {
+                continue;
+            }
+            let d = inp.lists.delta(pi, inp.pos[j]);
+            let r = d.norm();
+            if r < cut && r > 0.0 {
+                *g += d * (inp.kernel.dw_dr(r) / r * sign * across * inp.vol[j]);
+            }
+        }
+    });
+}
+
 /// The normal `n` (unit, from side A into side B) of a band particle at distance `dist_m` [m]
 /// along the wall's normal `nw` (unit, into the fluid; zero: no wall near), turned towards the
 /// one that meets the wall at the angle whose cosine is `cos_theta` (measured in side A), over

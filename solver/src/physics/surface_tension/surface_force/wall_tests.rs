@@ -327,3 +327,4 @@ fn with_the_wall_normal_a_static_cap_at_its_angle_is_pushed_out_only_below_90_de
     assert!(push[1].abs() < 0.03 && push[2].abs() < 0.03, "{push:?}");
     assert!((push[0] - 0.06).abs() < 0.02, "{push:?}");
 }
+

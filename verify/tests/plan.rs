@@ -102,7 +102,10 @@ const CASES: [&str; 12] = [
 #[test]
 fn smoke_suite_tasks_in_any_order_one_stopped_by_sigterm_collect_to_the_serial_summary() {
     // a case added to the suite is added here
-    let list = verify().args(["list", "--fidelity", "smoke"]).output().unwrap();
+    let list = verify()
+        .args(["list", "--fidelity", "smoke"])
+        .output()
+        .unwrap();
     let listed: Vec<String> = String::from_utf8_lossy(&list.stdout)
         .lines()
         .filter(|l| !l.starts_with(' '))

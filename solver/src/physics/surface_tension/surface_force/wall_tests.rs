@@ -2,7 +2,8 @@
 //! wall under a gas has no force and the energy of its two faces; a vertical liquid|gas
 //! interface across a channel is pushed along the walls by Young's unbalanced tension, which
 //! vanishes at 90°; a circular contact line is pushed outwards as by a negative line tension
-//! (the caps' known error); the bits do not depend on the thread count.
+//! under the shares, drawn in as by a positive one under the wall normal (the caps' known
+//! errors); the bits do not depend on the thread count.
 
 use super::contact_line::{self, Channel};
 use super::wall_normal::WallNormal;
@@ -222,43 +223,41 @@ fn with_the_wall_normal_a_contact_line_off_its_angle_is_pushed_along_the_wall() 
         channel.push_n(&s) / channel.energy_push_n(SIGMA, cos)
     };
     let share = contact_line::young_share(colour_kernel(), L0, true);
-    // measured 0.885 (the truncated colour gradients at the wall and the blend's width; 0.75
-    // over a quarter of the support, 0.95 over the whole): bounded to within 0.05 of it, as a
-    // regression guard
-    assert!((share - 0.885).abs() < 0.05, "{share}");
-    // 120° is 60° with the sides swapped: the same share (round-off)
-    assert!((ratio(120.0, 1.0) / share - 1.0).abs() < 1e-9);
-    // the push is not exactly linear in cos θ (the normal is turned, not the tension split;
-    // uncalibrated 0.885–0.899 from 15° to 145°): calibrated by the share at 60°, it is within
-    // 2 % of the energy's from 35° to 145° (measured 0.0–1.0 %; 2.0 % at 30°; at 15° the
-    // calibrated cos θ is clipped at 1, and the push is 0.95 of the energy's)
-    let thetas = [15.0, 30.0, 35.0, 45.0, 60.0, 80.0, 120.0, 145.0];
+    let thetas = [5.0, 15.0, 30.0, 45.0, 60.0, 80.0, 120.0, 150.0, 175.0];
     let calibrated: Vec<(f64, f64, f64)> = thetas
         .iter()
         .map(|&t| (t, ratio(t, 1.0), ratio(t, 1.0 / share)))
         .collect();
     eprintln!("share {share}; (θ, uncalibrated, calibrated): {calibrated:?}");
-    for (theta, _, c) in calibrated
-        .into_iter()
-        .filter(|c| (35.0..=145.0).contains(&c.0))
-    {
+    // measured 1.055: the wall's side of the colour's jump hands the fluid a little more than
+    // Young's push (0.885 without it); bounded to within 0.05 of it, as a regression guard
+    assert!((share - 1.055).abs() < 0.05, "{share}");
+    // 120° is 60° with the sides swapped: the same share (round-off)
+    assert!((ratio(120.0, 1.0) / share - 1.0).abs() < 1e-9);
+    // the push is not exactly linear in cos θ (the normal is turned, not the tension split):
+    // calibrated by the share at 60°, it is within 2 % of the energy's at every angle
+    // (measured 0.990–1.008 from 5° to 175°); the calibrated cos θ stays below 1 (0.948 cos θ),
+    // so no angle is clipped
+    for (theta, _, c) in calibrated {
         assert!((c - 1.0).abs() < 0.02, "{theta}°: {c}");
     }
 }
 
 #[test]
-fn with_the_wall_normal_the_line_tension_is_a_tenth_of_the_shares() {
+fn with_the_wall_normal_the_line_tension_is_a_quarter_of_the_shares_and_draws_the_line_in() {
     // the same column as the shares' line tension test: no liquid face meets a wall face, so
-    // the corners that give the shares' −0.34 σ r_e are not there (measured push × a/(σ r_e)
-    // 0.0330, 0.0328 at 2 and 4 r_e); what is left, a tenth of it, comes from the colour
-    // gradients truncated at the wall. Bounded at 0.06 (a sixth of the shares') and the same
-    // at both radii within 5 % (a line tension's 1/a)
+    // the corners that give the shares' −0.34 σ r_e are not there. What is left comes from the
+    // colour extrapolated into the wall, a smeared image of the fluid's: measured push × a/(σ
+    // r_e) −0.0817, −0.0803 at 2 and 4 r_e, a positive line tension (it draws the line in;
+    // +0.033 before the wall's colour, from the gradients truncated at the wall). Bounded at
+    // 0.12 (a third of the shares') and the same at both radii within 5 % (a line tension's
+    // 1/a)
     let scaled: Vec<f64> = [2.0, 4.0]
         .iter()
         .map(|&a| column_foot_push(a, NORMAL) * a / SIGMA)
         .collect();
     eprintln!("push × a/(σ r_e): {scaled:?}");
-    assert!(scaled[1].abs() < 0.06, "{scaled:?}");
+    assert!(scaled[1] < 0.0 && scaled[1].abs() < 0.12, "{scaled:?}");
     assert!((scaled[0] / scaled[1] - 1.0).abs() < 0.05, "{scaled:?}");
 }
 
@@ -270,13 +269,79 @@ fn with_the_wall_normal_the_same_bits_for_any_thread_count() {
     });
 }
 
+/// The pressure force [N] on each fluid particle of `c` (positions on the lattice `(k + ½) l0`,
+/// periodic along x and y over `n` sites) when the liquid (phase 0) holds the pressure `dp_pa`
+/// [Pa] and the gas none: the model's pair term `−V_i V_j (p_i + p_j) ∇_i W` with its SPH kernel
+/// (Wendland C2, h = 1.3 l0) over fluid and wall neighbours, the walls' pressure extrapolated
+/// from the fluid as the model does (Adami et al. 2012: `Σ_f p_f W_wf / Σ_f W_wf`; no gravity).
+fn laplace_pressure_force(c: &Cloud, n: usize, dp_pa: f64) -> Vec<Vec3> {
+    use crate::kernel::WendlandC2;
+    use std::collections::HashMap;
+    let k = WendlandC2::new(1.3 * L0);
+    let reach = (k.support_m() / L0).ceil() as i64;
+    let key = |x: Vec3| (x / L0).map(|v| v.floor() as i64);
+    let at: HashMap<_, usize> = c
+        .pos
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| (key(x), i))
+        .collect();
+    let wrap = |v: i64| v.rem_euclid(n as i64);
+    let neighbours = |i: usize| {
+        let ki = key(c.pos[i]);
+        let mut out = Vec::new();
+        for dx in -reach..=reach {
+            for dy in -reach..=reach {
+                for dz in -reach..=reach {
+                    let kj = nalgebra::Vector3::new(wrap(ki.x + dx), wrap(ki.y + dy), ki.z + dz);
+                    let d = Vec3::new(dx as f64, dy as f64, dz as f64) * -L0; // x_i − x_j
+                    if let Some(&j) = at.get(&kj) {
+                        if j != i && d.norm() < k.support_m() {
+                            out.push((j, d));
+                        }
+                    }
+                }
+            }
+        }
+        out
+    };
+    let mut p: Vec<f64> = (0..c.pos.len())
+        .map(|i| {
+            if i < c.n_fluid && c.phase[i] == 0 {
+                dp_pa
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    for w in c.n_fluid..c.pos.len() {
+        let (mut num, mut den) = (0.0, 0.0);
+        for (j, d) in neighbours(w).into_iter().filter(|&(j, _)| j < c.n_fluid) {
+            num += p[j] * k.w(d.norm());
+            den += k.w(d.norm());
+        }
+        p[w] = if den > 0.0 { num / den } else { 0.0 };
+    }
+    (0..c.n_fluid)
+        .map(|i| {
+            let mut f = Vec3::zeros();
+            for (j, d) in neighbours(i) {
+                let r = d.norm();
+                f -= d * (k.dw_dr(r) / r * c.vol[i] * c.vol[j] * (p[i] + p[j]));
+            }
+            f
+        })
+        .collect()
+}
+
 /// The radial push at the foot of a static spherical cap of radius `rho_l0` spacings meeting a
 /// wall at its typed angle `theta_deg`, beyond the same sphere's without the wall, per length of
 /// contact line over σ [-]: the force along the wall's plane away from the axis on the fluid
-/// within 2 r_e of the wall (the wall normal's treatment, calibrated as the model is), less that
-/// of the full sphere (fluid below the plane instead of the wall, no walls) on the same sites.
-/// A treatment without errors at the wall gives zero: the cap is Young's equilibrium.
-fn static_cap_push(theta_deg: f64, rho_l0: f64) -> f64 {
+/// within 2 r_e of the wall (the wall normal's treatment, calibrated as the model is, and, if
+/// `with_pressure`, the liquid's Laplace pressure `2σ/ρ` through the fluid and the wall), less
+/// that of the full sphere (fluid below the plane instead of the wall, no walls) on the same
+/// sites. A treatment without errors at the wall gives zero: the cap is Young's equilibrium.
+fn static_cap_push(theta_deg: f64, rho_l0: f64, with_pressure: bool) -> f64 {
     let rho = rho_l0 * L0;
     let zc = -rho * theta_deg.to_radians().cos();
     let n = (2.0 * (rho + R_E) / L0).ceil() as usize + 6;
@@ -306,25 +371,46 @@ fn static_cap_push(theta_deg: f64, rho_l0: f64) -> f64 {
             })
             .sum()
     };
+    let dp = if with_pressure {
+        2.0 * SIGMA / rho
+    } else {
+        0.0
+    };
+    let with = |c: &Cloud, force: &[Vec3]| -> Vec<Vec3> {
+        let pressure = laplace_pressure_force(c, n, dp);
+        force.iter().zip(&pressure).map(|(f, p)| f + p).collect()
+    };
     let a = rho * theta_deg.to_radians().sin();
-    (foot(&on_wall, &s.force) - foot(&sphere, &t.force)) / (2.0 * std::f64::consts::PI * a * SIGMA)
+    let (cap, full) = (with(&on_wall, &s.force), with(&sphere, &t.force));
+    (foot(&on_wall, &cap) - foot(&sphere, &full)) / (2.0 * std::f64::consts::PI * a * SIGMA)
 }
 
 #[test]
-fn with_the_wall_normal_a_static_cap_at_its_angle_is_pushed_out_only_below_90_degrees() {
-    // a cap of radius 10 l0 (its foot a = 2.1, 2.4, 2.1 r_e at 60°, 90°, 120°). Measured: 120°
-    // +0.001, 90° +0.022 (the line tension's 0.033 r_e/a is 0.014), 60° +0.062; under the
-    // shares the same probe gives 0.178, 0.137, 0.133 (their line tension). So at 120° the
-    // static force at the foot is Young's (the caps' 12° error there comes from their motion),
-    // and below 90° a push of about 0.045σ beyond the line tension spreads the cap (the
-    // 60° caps' 57.3° at R/l0 = 11: docs/findings.md). Bounds: 0.03 at 90° and 120° (a fifth
-    // of the shares'), and 0.06 ± 0.02 at 60° as a regression guard on the known error
+fn with_the_wall_normal_a_static_cap_at_its_angle_is_drawn_in_below_120_degrees() {
+    // a cap of radius 10 l0 (its foot a = 2.1, 2.4, 2.1 r_e at 60°, 90°, 120°). Measured, with
+    // the Laplace pressure: 60° −0.073, 90° −0.064, 120° −0.017; the surface force alone
+    // −0.069, −0.064, −0.020: the pressure through the wall (extrapolated from the fluid) acts
+    // as the full sphere's fluid below the plane does. Before the wall's side of the colour's
+    // jump (docs/findings.md) the surface force alone gave +0.062, +0.022, +0.001, and the
+    // shares give +0.178, +0.137, +0.133 (their line tension). A treatment without errors at
+    // the wall gives 0. Bounds: the pressure's share below 0.01 (a tenth of the shares' line
+    // tension); 0.03 at 120°, and −0.07 ± 0.02 at 60° and 90°, regression guards on the known
+    // error (a cap drawn back to `cos θ_Y − 0.07`, 64° for 60°)
     let push: Vec<f64> = [60.0, 90.0, 120.0]
         .iter()
-        .map(|&t| static_cap_push(t, 10.0))
+        .map(|&t| static_cap_push(t, 10.0, true))
         .collect();
-    eprintln!("push/(σ per length) at 60°, 90°, 120°: {push:?}");
-    assert!(push[1].abs() < 0.03 && push[2].abs() < 0.03, "{push:?}");
-    assert!((push[0] - 0.06).abs() < 0.02, "{push:?}");
+    let alone: Vec<f64> = [60.0, 90.0, 120.0]
+        .iter()
+        .map(|&t| static_cap_push(t, 10.0, false))
+        .collect();
+    eprintln!("push/(σ per length) at 60°, 90°, 120°: {push:?}; the surface force alone {alone:?}");
+    for (p, a) in push.iter().zip(&alone) {
+        assert!((p - a).abs() < 0.01, "{push:?} {alone:?}");
+    }
+    assert!(push[2].abs() < 0.03, "{push:?}");
+    assert!(
+        (push[0] + 0.07).abs() < 0.02 && (push[1] + 0.07).abs() < 0.02,
+        "{push:?}"
+    );
 }
-

@@ -135,20 +135,6 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// A [`BodyShape::Cap`]'s ball centre [m]: `R cos θ` below its flat face's `center` [m] along
-/// the pole (above it past 90°).
-fn cap_ball_center(center: [f64; 3], radius: f64, pole: [f64; 3], angle_deg: f64) -> [f64; 3] {
-    let u = unit(pole);
-    let below = radius * angle_deg.to_radians().cos();
-    sub(center, [below * u[0], below * u[1], below * u[2]])
-}
-
-/// `v` scaled to unit length [-].
-fn unit(v: [f64; 3]) -> [f64; 3] {
-    let n = dot(v, v).sqrt();
-    [v[0] / n, v[1] / n, v[2] / n]
-}
-
 /// Lattice index range `i` whose sites `(i + ½) l0` can lie in `[lo, hi]`.
 fn index_range(lo: f64, hi: f64, l0: f64) -> std::ops::RangeInclusive<i64> {
     // saturating: validation keeps shapes inside the domain; this only guards the arithmetic
@@ -204,18 +190,7 @@ impl BodyShape {
                 [c[0] - r, c[1] - r, c[2] - r],
                 [c[0] + r, c[1] + r, c[2] + r],
             ),
-            BodyShape::Cap {
-                center,
-                radius: r,
-                pole,
-                angle_deg,
-            } => {
-                let c = cap_ball_center(center, r, pole, angle_deg);
-                (
-                    [c[0] - r, c[1] - r, c[2] - r],
-                    [c[0] + r, c[1] + r, c[2] + r],
-                )
-            }
+            BodyShape::Cap { .. } => self.cap_ball().bounds(),
             BodyShape::Ellipsoid {
                 center: c,
                 semi_axes: a,
@@ -226,6 +201,26 @@ impl BodyShape {
             BodyShape::Box { min, max }
             | BodyShape::BoxAroundEllipsoid { min, max, .. }
             | BodyShape::Surrounding { min, max } => (min, max),
+        }
+    }
+
+    /// A [`BodyShape::Cap`]'s whole ball, its centre `R cos θ` below the flat face along the
+    /// pole (above it past 90°); any other shape: itself.
+    fn cap_ball(&self) -> BodyShape {
+        match *self {
+            BodyShape::Cap {
+                center,
+                radius,
+                pole,
+                angle_deg,
+            } => {
+                let below = radius * angle_deg.to_radians().cos() / dot(pole, pole).sqrt();
+                BodyShape::Sphere {
+                    center: sub(center, pole.map(|x| below * x)),
+                    radius,
+                }
+            }
+            _ => self.clone(),
         }
     }
 
@@ -270,14 +265,8 @@ impl BodyShape {
                 let d = sub(p, center);
                 dot(d, d) < radius * radius && dot(d, pole) >= 0.0
             }
-            BodyShape::Cap {
-                center,
-                radius,
-                pole,
-                angle_deg,
-            } => {
-                let d = sub(p, cap_ball_center(center, radius, pole, angle_deg));
-                dot(d, d) < radius * radius && dot(sub(p, center), pole) >= 0.0
+            BodyShape::Cap { center, pole, .. } => {
+                self.cap_ball().contains(p) && dot(sub(p, center), pole) >= 0.0
             }
         }
     }

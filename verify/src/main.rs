@@ -30,8 +30,21 @@ fn tune_allocator() {
     }
 }
 
+/// A command piped into a reader that stops early (`verify list | head`) ends quietly, as Unix
+/// tools do, instead of panicking on the closed pipe: Rust ignores SIGPIPE by default, so every
+/// `print!` after the reader has gone fails with EPIPE and panics. Restoring the default action
+/// makes the write end the process (runs write their records to files, which raise no SIGPIPE).
+fn end_quietly_on_a_closed_pipe() {
+    #[cfg(unix)]
+    // SAFETY: restores a signal's default action; called before any thread is started.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 fn main() {
     tune_allocator();
+    end_quietly_on_a_closed_pipe();
     let cli = Cli::parse();
     let code = match cli.command {
         Command::Run(args) => args.run(),

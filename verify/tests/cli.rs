@@ -317,6 +317,22 @@ fn the_readme_walkthrough_works_as_written() {
 
 /// The documented diagnostics and listing commands run and print their tables.
 #[test]
+fn a_reader_that_stops_early_ends_the_listing_without_a_panic() {
+    // the reader closes its end before the listing starts (it fits in a pipe's buffer, so a
+    // reader that took a line first would see no closed pipe): every write then meets EPIPE
+    let mut child = verify()
+        .arg("list")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
 fn diagnostics_and_list_print_their_tables() {
     for (args, expect) in [
         (vec!["list"], "convergence"),

@@ -315,7 +315,7 @@ fn the_readme_walkthrough_works_as_written() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
-/// The documented diagnostics and listing commands run and print their tables.
+/// `verify list | head`: the listing ends on the closed pipe without a panic.
 #[test]
 fn a_reader_that_stops_early_ends_the_listing_without_a_panic() {
     // the reader closes its end before the listing starts (it fits in a pipe's buffer, so a
@@ -332,6 +332,7 @@ fn a_reader_that_stops_early_ends_the_listing_without_a_panic() {
     assert!(!err.contains("panicked"), "{err}");
 }
 
+/// The documented diagnostics and listing commands run and print their tables.
 #[test]
 fn diagnostics_and_list_print_their_tables() {
     for (args, expect) in [

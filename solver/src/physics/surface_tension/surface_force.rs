@@ -179,8 +179,7 @@ impl ForceScratch {
                 .zip(self.gradient[n..].par_iter())
                 .zip(inp.vol[n..n_all].par_iter())
                 .for_each(|((e, g), v)| *e += v * s * g.norm());
-            let (grad, sums, normal) = (&self.gradient, &self.sums, &self.normal);
-            let geometry = &self.wall_geometry;
+            let (grad, sums) = (&self.gradient, &self.sums);
             self.force
                 .par_iter_mut()
                 .zip(self.curvature.par_iter_mut())
@@ -197,11 +196,7 @@ impl ForceScratch {
                         return;
                     }
                     *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
-                    let along = match turn {
-                        Some(_) => wall_normal::force_direction(g, normal[i], geometry[i].0),
-                        None => g,
-                    };
-                    *f += along * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
+                    *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
                 });
         }
         // a fixed-order sum: the same bits for any thread count

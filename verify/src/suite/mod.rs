@@ -27,11 +27,9 @@ use std::path::{Path, PathBuf};
 pub enum Fidelity {
     /// Each case in seconds, for the test suite.
     Smoke,
-    /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes about
-    /// 15 h — the 118 committed runs' own wall times, 15.4 h: 9.8 h of them runs on one thread
-    /// (two at a time on 2 cores), the rest on two threads (the continuum models' six drops and
-    /// finest caps); finished runs are reused, so `all` then only re-reports (docs/findings.md
-    /// lists the caps not run yet).
+    /// The default of `verify all`: resolves the physics. A full re-run (`--force`) takes most
+    /// of a day on 2 cores (the README states the committed runs' own wall times); finished runs
+    /// are reused, so `all` then only re-reports, after simulating any run not made yet.
     Standard,
     /// The papers' particle counts and time steps.
     Paper,

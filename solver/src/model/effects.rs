@@ -1,8 +1,8 @@
 //! The effects built for a run, resolved from the scene's `[effects]`, `[density]` and walls.
 
 use crate::scene::{
-    DensityScheme, ImplicitViscosity, LaminarForm, NegativePressure, Reinit, Scene, TensionModel,
-    WallBoundary,
+    DensityScheme, ImplicitViscosity, LaminarForm, NegativePressure, PressureGradient, Reinit,
+    Scene, TensionModel, WallBoundary,
 };
 use serde::Serialize;
 
@@ -48,6 +48,8 @@ pub struct Effects {
     pub density_reinit: Option<(Reinit, u32)>,
     /// Negative EOS pressure clipped to zero.
     pub clip_negative_pressure: bool,
+    /// The pressure force between liquid particles in the difference form (else symmetric).
+    pub pressure_difference: bool,
 }
 
 impl Effects {
@@ -82,6 +84,7 @@ impl Effects {
                 r => Some((r, scene.density.reinit_every)),
             },
             clip_negative_pressure: scene.density.negative_pressure == NegativePressure::Clip,
+            pressure_difference: scene.density.pressure_gradient == PressureGradient::Difference,
         }
     }
 

@@ -82,6 +82,11 @@ pub struct Observables {
     /// a physical dissipation but the work of a force that is the gradient of no energy (the
     /// extrapolated wall pressure, Adami 2012); either sign.
     pub dissipated_wall_pressure_j: f64,
+    /// Energy the liquid lost to the difference form of the pressure force beyond the
+    /// symmetric form's work since the start [J] (zero with the symmetric form): the work of
+    /// `−V_i Σ_j V_j (p_j − p_i) ∇_i W_ij + Σ_j (p_i V_i² + p_j V_j²) ∇_i W_ij`, which is the
+    /// gradient of no energy; either sign. In the energy budget, not yet a time-series column.
+    pub dissipated_pressure_difference_j: f64,
     /// Compression energy removed by the density re-initialisations since the start [J]
     /// (either sign).
     pub dissipated_density_reinit_j: f64,
@@ -184,8 +189,8 @@ pub fn observe(
         // booked on one side each (between liquid particles; with wall particles): the other
         // side stays zero
         dissipated_artificial_j: d.of(Ledger::Artificial, false) + d.of(Ledger::Artificial, true),
-        dissipated_wall_pressure_j: d.of(Ledger::WallPressure, true)
-            + d.of(Ledger::WallPressure, false),
+        dissipated_wall_pressure_j: d.of(Ledger::Pressure, true),
+        dissipated_pressure_difference_j: d.of(Ledger::Pressure, false),
         dissipated_density_reinit_j: d.density_reinit_j,
         dissipated_shifting_j: d.shifting_j,
         energy_balance_j: kinetic_energy_j

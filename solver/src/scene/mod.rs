@@ -571,6 +571,30 @@ pub struct DensityControl {
     /// the energy budget (in a periodic box the liquid's volume hardly changes).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub background_pressure: f64,
+    /// The pressure force between liquid particles: `symmetric` (default; Eq. 11, Natsui 2021,
+    /// the Hu & Adams 2006 form) or `difference` (`−V_i Σ_j V_j (p_j − p_i) ∇_i W_ij`, which a
+    /// uniform pressure leaves at zero whatever the particles' arrangement: no pair stiffness
+    /// from the pressure level, docs/model.md §3), with walls too; only with a continuum model.
+    #[serde(default, skip_serializing_if = "is_symmetric")]
+    pub pressure_gradient: PressureGradient,
+}
+
+fn is_symmetric(g: &PressureGradient) -> bool {
+    *g == PressureGradient::Symmetric
+}
+
+/// The form of the pressure force between liquid particles (docs/model.md §2).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum PressureGradient {
+    /// `−Σ_j (p_i V_i² + p_j V_j²) ∇_i W_ij` (Eq. 11, Natsui 2021): conserves momentum, and a
+    /// pressure level loads every pair, which gives the particle arrangement a stiffness.
+    #[default]
+    Symmetric,
+    /// `−V_i Σ_j V_j (p_j − p_i) ∇_i W_ij`: zeroth-order consistent (a uniform pressure exerts
+    /// no force), not exactly momentum conserving; its departure from the symmetric form is
+    /// booked in the energy budget.
+    Difference,
 }
 
 fn is_zero(v: &f64) -> bool {
@@ -600,6 +624,7 @@ impl Default for DensityControl {
             reinit_every: default_reinit_every(),
             negative_pressure: NegativePressure::Clip,
             background_pressure: 0.0,
+            pressure_gradient: PressureGradient::Symmetric,
         }
     }
 }

@@ -7,7 +7,7 @@ use crate::kernel::Kernel;
 use crate::physics::forces::Monaghan1994WallRepulsion;
 use crate::physics::forces::{
     fluid_forces, ArtificialViscosity, ContinuityRate, LaminarViscosity, LoopInput,
-    MonaghanClearyGingold, Neighbourhood, Off, Power, Pressure,
+    MonaghanClearyGingold, Neighbourhood, Off, Power, Pressure, PressureDifference,
 };
 use crate::physics::surface_tension::PairwisePotential;
 use crate::scene::LaminarForm;
@@ -62,7 +62,8 @@ impl Simulation {
         let inp = self.loop_input::<K>();
         with_terms!(terms => fluid_forces(&inp, &terms, acc, drho);
             if e.interfacial_tension => self.potential_term(),
-            always => self.pressure_term(),
+            if !e.pressure_difference => self.pressure_term(),
+            else if e.pressure_difference => self.pressure_difference_term(),
             if e.artificial_viscosity.is_some() => self.artificial_viscosity_term(),
             if e.explicit_laminar(LaminarForm::HuAdams) => self.laminar_viscosity_term(),
             else if e.explicit_laminar(LaminarForm::MonaghanClearyGingold) => self.mcg_viscosity_term(),
@@ -94,6 +95,14 @@ impl Simulation {
     /// The pressure term of the current state.
     pub fn pressure_term(&self) -> Pressure<'_> {
         Pressure {
+            pressure: &self.particles.pressure,
+            vol: &self.particles.vol,
+        }
+    }
+
+    /// The pressure term in its difference form, of the current state.
+    pub fn pressure_difference_term(&self) -> PressureDifference<'_> {
+        PressureDifference {
             pressure: &self.particles.pressure,
             vol: &self.particles.vol,
         }

@@ -177,7 +177,7 @@ fn the_loop_books_each_terms_own_power_and_leaves_the_accelerations_alone() {
     check(
         "wall pressure",
         &alone(&walls_only, pressure),
-        Ledger::WallPressure,
+        Ledger::Pressure,
     );
     // the no-slip plate's share of laminar viscosity is booked on its own channel
     let walls = channel(Ledger::Laminar as usize, true);

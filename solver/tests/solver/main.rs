@@ -16,6 +16,7 @@ mod implicit_viscosity;
 mod laminar_forms;
 mod lattice_energy;
 mod periodic;
+mod pressure_forms;
 mod scene_errors;
 mod shifting;
 mod surface_force_walls;

@@ -4,7 +4,8 @@
 //! Such a term declares a [`Booking`]: the viscosities (dissipative; laminar viscosity at a
 //! no-slip wall couples the liquid to the wall's ghost velocity instead, so its liquid and
 //! wall neighbours are booked apart) and the pressure for the walls' own part
-//! `−p_w V_w² ∇_i W_iw` (the extrapolated wall pressure has no energy). The fused loop then
+//! `−p_w V_w² ∇_i W_iw` (the extrapolated wall pressure has no energy) and, in its difference
+//! form, for the liquid pairs' departure from the symmetric form. The fused loop then
 //! also sums the booked force on each fluid particle `i` on its own, `f_i^t` [N], and returns,
 //! per channel, `P = Σ_i f_i^t·v_i` [W] and `Q = Σ_i f_i^t·a_i` [W/s], with `v_i` the
 //! velocity the forces were evaluated with and `a_i` the total acceleration.
@@ -33,8 +34,10 @@ pub enum Ledger {
     Laminar = 0,
     /// Artificial viscosity.
     Artificial = 1,
-    /// The walls' own part of the pressure force.
-    WallPressure = 2,
+    /// The pressure force's work that is the gradient of no energy: the walls' own part (wall
+    /// channel) and, with the difference form, its liquid pairs' departure from the symmetric
+    /// form (liquid channel).
+    Pressure = 2,
 }
 
 impl Ledger {

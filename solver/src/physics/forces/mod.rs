@@ -26,6 +26,7 @@ pub mod laminar_viscosity;
 pub mod ledger;
 pub mod pairs_once;
 pub mod pressure;
+pub mod pressure_difference;
 pub mod term;
 pub mod wall_repulsion;
 
@@ -35,5 +36,6 @@ pub use fused::{fluid_forces, LoopInput};
 pub use laminar_viscosity::{LaminarViscosity, MonaghanClearyGingold};
 pub use ledger::{Dissipation, Ledger, Power};
 pub use pressure::Pressure;
+pub use pressure_difference::PressureDifference;
 pub use term::{Neighbourhood, Off, PairTerm};
 pub use wall_repulsion::Monaghan1994WallRepulsion;

@@ -33,7 +33,7 @@ impl Lanes for PressureLanes {
 impl PairTerm for Pressure<'_> {
     /// The walls' own part (module doc).
     const BOOKING: Option<Booking> = Some(Booking {
-        ledger: Ledger::WallPressure,
+        ledger: Ledger::Pressure,
         part: Part::Central,
         liquid: false,
         walls: true,
@@ -58,6 +58,6 @@ impl PairTerm for Pressure<'_> {
         s.central -= if k.inside { v } else { 0.0 };
         // the neighbour's own part, booked for wall neighbours only
         let w = l.pv[n] * k.dw_r;
-        s.booked[Ledger::WallPressure as usize] = if k.inside { -w } else { 0.0 };
+        s.booked[Ledger::Pressure as usize] = if k.inside { -w } else { 0.0 };
     }
 }

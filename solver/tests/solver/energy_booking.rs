@@ -1,4 +1,5 @@
-//! The pair loop's booking of the dissipative terms and of the walls' own pressure
+//! The pair loop's booking of the dissipative terms, of the walls' own pressure and of the
+//! pressure's difference form's departure from the compression energy's gradient
 //! (`physics::forces::ledger`): it reports each term's power exactly, and it leaves the
 //! accelerations bitwise alone. Its cost is measured by an ignored test.
 
@@ -222,4 +223,40 @@ fn booking_cost() {
         let q = |f: usize| t[f * reps / 4] * 1e3;
         println!("{name:12} quartiles {:.3} {:.3} {:.3} ms", q(1), q(2), q(3));
     }
+}
+
+#[test]
+fn the_difference_form_books_its_departure_from_the_compression_energys_gradient() {
+    // a hemisphere under the surface force on a plate, in motion: liquid and wall pairs
+    let text =
+        super::surface_force_walls::cap(120.0, "[density]\npressure_gradient = \"difference\"");
+    let mut s = sim(&text);
+    advance(&mut s, 30);
+    let mut acc = vec![Vec3::zeros(); s.particles.n_fluid];
+    let power = s.pair_forces::<WendlandC2>(&mut acc, &mut []);
+    // the departure is the difference form's force less the compression energy's gradient,
+    // which is the symmetric form's force less its booked walls' own part
+    let difference = alone(&s, s.pressure_difference_term());
+    let symmetric = alone(&s, s.pressure_term());
+    let mut own = vec![Vec3::zeros(); s.particles.n_fluid];
+    let walls_own = fluid_forces(
+        &s.loop_input::<WendlandC2>(),
+        &(s.pressure_term(), Off),
+        &mut own,
+        &mut [],
+    );
+    let departure: Vec<Vec3> = difference
+        .iter()
+        .zip(&symmetric)
+        .map(|(d, y)| d - y + s.model.gravity())
+        .collect();
+    let (pv, _, abs) = power_of(&s, &departure, &acc);
+    let expected = pv + booked(&walls_own, Ledger::Pressure).0;
+    let (bv, _) = booked(&power, Ledger::Pressure);
+    assert!(abs > 0.0, "no departure at all");
+    // the same products summed in another order (round-off, as in `assert_booked`)
+    assert!(
+        (bv - expected).abs() <= 1e-10 * (abs + expected.abs()),
+        "booked {bv:e} W, expected {expected:e} W"
+    );
 }

@@ -18,7 +18,7 @@ const R: f64 = 6.0 * L0;
 /// whose top is z = 0, in a gas `g` (no surface tension) filling a box periodic along x and y
 /// (24 spacings) up to z = 12 l0, under the surface force, with `extra` appended. The box is
 /// periodic along z too, the gas at its top meeting the plate's underside: no free surface.
-fn cap(theta_deg: f64, extra: &str) -> String {
+pub fn cap(theta_deg: f64, extra: &str) -> String {
     let half = 12.0 * L0;
     format!(
         r#"

@@ -86,6 +86,14 @@ pub fn energy_growth(energy: &[f64], skip: f64) -> f64 {
     energy[from..].iter().fold(0.0f64, |g, &e| g.max(e - e0))
 }
 
+/// The largest distance of the vector with components `xyz` from its first value (in their
+/// unit).
+pub fn drift([x, y, z]: [Vec<f64>; 3]) -> f64 {
+    (0..x.len())
+        .map(|k| ((x[k] - x[0]).powi(2) + (y[k] - y[0]).powi(2) + (z[k] - z[0]).powi(2)).sqrt())
+        .fold(0.0, f64::max)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -135,5 +143,13 @@ mod tests {
         // from index 2 (skip 1/3): growth above 3.0 is 0.5
         assert!((energy_growth(&e, 0.34) - 0.5).abs() < 1e-12);
         assert_eq!(energy_growth(&[1.0, 0.5, 0.2], 0.0), 0.0);
+    }
+
+    #[test]
+    fn drift_is_the_largest_distance_from_the_start() {
+        // a point moving from the origin to (3, 4, 0) and back halfway: 5 from its start
+        let d = drift([vec![0.0, 3.0, 1.5], vec![0.0, 4.0, 2.0], vec![0.0; 3]]);
+        assert_eq!(d, 5.0);
+        assert_eq!(drift([vec![], vec![], vec![]]), 0.0);
     }
 }

@@ -182,7 +182,8 @@ fn drop_table(drops: &[DropPoint]) -> String {
 
 /// A continuum model's drop table: R/l0, spacing, the drop's and all particles, period, the
 /// viscous reference and Lamb's inviscid in the host with the errors against each, decay rate
-/// against the reference's with ν and with ν + ν_AV, Q2 offset, the z-extent's fit, wall time.
+/// against the reference's with ν and with ν + ν_AV, Q2 offset, the z-extent's fit, the
+/// momentum's drift, wall time.
 fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
     let mut s = format!(
         "\n## The same drop under the continuum {}, in a host of equal density (docs/model.md {})\n\n\
@@ -190,8 +191,8 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
          physical viscosities (Miller & Scriven 1968); Lamb's inviscid period is beside it. The static \
          stiffness is the model's against the l = 2 mode of a lattice sphere of the same R/l0 (`verify stiffness`): the \
          force's share of the error, apart from the run's inertia (host, box, compressibility).\n\n\
-         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | reference [ms] | error | Lamb inviscid [ms], error | static stiffness k/k_exact (its error) | decay rate [1/s] | / reference(ν) | / reference(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | wall time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+         | R/l0 | l0 [µm] | drop particles | all particles | period [ms] | reference [ms] | error | Lamb inviscid [ms], error | static stiffness k/k_exact (its error) | decay rate [1/s] | / reference(ν) | / reference(ν + ν_AV) | Q2 offset | z-extent: period [ms], error, decay [1/s] | momentum drift / (M·|v|max) | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
         h.name,
         h.section
     );
@@ -200,7 +201,7 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
         let (t, t0) = (d.reference_period_s, d.inviscid_period_s);
         let _ = writeln!(
             s,
-            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.2}, {:+.1} % | {:.3} ({:+.1} %) | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.0} |",
+            "| {:.1} | {:.1} | {} | {} | {:.2} | {:.2} | {:+.1} % | {:.2}, {:+.1} % | {:.3} ({:+.1} %) | {:.1} | {:.1} | {:.1} | {:+.4} | {:.2}, {:+.1} %, {:.1} | {:.1e} | {:.0} |",
             d.r_over_l0,
             d.run.info.scene.discretisation.l0 * 1e6,
             d.drop_particles,
@@ -219,6 +220,7 @@ fn host_drop_table(h: &HostModel, drops: &[DropPoint]) -> String {
             pe * 1e3,
             100.0 * (pe / t - 1.0),
             ge,
+            d.momentum_drift,
             d.run.info.wall_time_s
         );
     }

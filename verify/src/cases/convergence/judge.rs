@@ -209,6 +209,20 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
                 100.0 * (d.static_stiffness.powf(-0.5) - 1.0)
             )),
         );
+        out.push(
+            Metric::new(
+                case,
+                format!("{prefix} momentum drift R/l0={r:.0}"),
+                "-",
+                d.momentum_drift,
+            )
+            .run(d.run)
+            .note(format!(
+                "{status}reported, not judged: the total momentum's largest distance from its start over M·|v|max (all liquids' \
+                 mass, the run's largest speed): round-off where every pair force is antisymmetric; the difference form \
+                 of the pressure force is not, and conserves momentum only to its discretisation error"
+            )),
+        );
     }
     out
 }

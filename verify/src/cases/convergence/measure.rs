@@ -9,9 +9,9 @@ use crate::cases::scene::artificial_viscosity_m2_s;
 use crate::cases::substrate::tail_stats;
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
 use crate::diagnostics::mode_stiffness::{self, Continuum};
-use crate::measure::geometry;
 use crate::measure::oscillation::{fit_damped_cosine, OscillationFit};
 use crate::measure::surface;
+use crate::measure::{geometry, invariants};
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
 use crate::suite::{Fidelity, RunData};
 use solver::kernel::KernelKind;
@@ -56,6 +56,11 @@ pub struct DropPoint<'r> {
     /// The damped cosine fitted to the z-extent (the outermost particles) from [`FIT_FROM_S`]:
     /// the same mode seen by the surface, beside the volume average Q2.
     pub extent_fit: Result<OscillationFit, String>,
+    /// The largest distance of the total momentum from its start over the momentum scale
+    /// `M |v|max` (all liquids' mass, the run's largest speed) [-]: round-off where every
+    /// force is a pair's antisymmetric one (the surface force's drops measure 1e-14); the
+    /// difference form of the pressure force conserves it only to its discretisation error.
+    pub momentum_drift: f64,
 }
 
 /// A cap at one angle and resolution.
@@ -108,7 +113,7 @@ pub struct Declared {
 
 /// The continuum model of `run`'s drop in a host, if it is one.
 fn host_model(run: &RunData) -> Option<HostModel> {
-    HostModel::of(&run.info.scene.effects)
+    HostModel::of(&run.info.scene)
 }
 
 /// Measures the runs (drops have no wall, caps have one; the continuum models' drops have a
@@ -143,7 +148,12 @@ pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
             css_caps: d.css_caps.len(),
         },
     };
-    let model_rank = |c: &CapPoint| c.host_model.map(|h| h.id);
+    // the potential's first, then the continuum models' in the case's order
+    let model_rank = |c: &CapPoint| {
+        c.host_model
+            .and_then(|h| super::CAP_MODELS.iter().position(|m| *m == h))
+            .map_or(0, |k| k + 1)
+    };
     m.caps.sort_by(|a, b| {
         model_rank(a)
             .cmp(&model_rank(b))
@@ -233,6 +243,17 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         .liquid_column(&liquid.name, LiquidColumn::Extent(Axis::Z));
     let efrom = ts.iter().position(|&x| x >= FIT_FROM_S).unwrap_or(ts.len());
     let en = ts.len().min(extent.len()).max(efrom);
+    let momentum =
+        invariants::drift(Axis::ALL.map(|ax| run.timeseries.run_column(RunColumn::Momentum(ax))));
+    let mass_kg: f64 = (scene.liquids.iter())
+        .filter_map(|l| {
+            (run.timeseries.liquid_column(&l.name, LiquidColumn::Mass))
+                .first()
+                .copied()
+        })
+        .sum();
+    let speed_m_s =
+        (run.timeseries.run_column(RunColumn::MaxSpeed).into_iter()).fold(0.0, f64::max);
     DropPoint {
         run,
         r_over_l0: RADIUS_M / l0,
@@ -247,6 +268,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         fit: fit_damped_cosine(&series.0, &series.1),
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
+        momentum_drift: momentum / (mass_kg * speed_m_s),
     }
 }
 

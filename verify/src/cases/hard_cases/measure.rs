@@ -68,7 +68,9 @@ pub fn hard_run(run: &RunData) -> HardRun<'_> {
         inside_walls: invariants::inside_walls(&liquid, sc),
         compression_after_transient: largest(&comp[from..]),
         compression_max: largest(&comp),
-        momentum_drift_kg_m_s: drift(Axis::ALL.map(|ax| ts.run_column(RunColumn::Momentum(ax)))),
+        momentum_drift_kg_m_s: invariants::drift(
+            Axis::ALL.map(|ax| ts.run_column(RunColumn::Momentum(ax))),
+        ),
         max_speed_m_s: (ts.run_column(RunColumn::MaxSpeed).into_iter()).fold(0.0, f64::max),
         energy_growth_j: invariants::energy_growth(&energy, TRANSIENT),
         bodies: invariants::components(&liquid, 1.5 * l0),
@@ -76,7 +78,7 @@ pub fn hard_run(run: &RunData) -> HardRun<'_> {
         centroid_drift_m: sc
             .liquids
             .first()
-            .map_or(0.0, |l| drift(centroids(ts, &l.name))),
+            .map_or(0.0, |l| invariants::drift(centroids(ts, &l.name))),
     }
 }
 
@@ -96,24 +98,13 @@ fn largest(v: &[f64]) -> f64 {
     v.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b))
 }
 
-/// The largest distance of the vector with components `xyz` from its first value.
-pub fn drift([x, y, z]: [Vec<f64>; 3]) -> f64 {
-    (0..x.len())
-        .map(|k| ((x[k] - x[0]).powi(2) + (y[k] - y[0]).powi(2) + (z[k] - z[0]).powi(2)).sqrt())
-        .fold(0.0, f64::max)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn sums_and_drifts() {
+    fn sums() {
         assert_eq!(sum(&[vec![1.0, 2.0], vec![10.0, 20.0]]), vec![11.0, 22.0]);
         assert!(sum(&[]).is_empty());
-        // a point moving from the origin to (3, 4, 0) and back halfway: 5 from its start
-        let d = drift([vec![0.0, 3.0, 1.5], vec![0.0, 4.0, 2.0], vec![0.0; 3]]);
-        assert_eq!(d, 5.0);
-        assert_eq!(drift([vec![], vec![], vec![]]), 0.0);
     }
 }

@@ -168,6 +168,13 @@ impl SceneBuilder {
         self
     }
 
+    /// The form of the pressure force between liquid particles (and at walls): symmetric
+    /// (Eq. 11, Natsui 2021) or the difference form (docs/model.md §3).
+    pub fn pressure_gradient(mut self, g: solver::scene::PressureGradient) -> Self {
+        self.scene.density.pressure_gradient = g;
+        self
+    }
+
     /// The short-range liquid–wall repulsion on or off.
     pub fn wall_repulsion(mut self, on: bool) -> Self {
         self.scene.effects.wall_repulsion = on;

@@ -84,10 +84,11 @@ fn where_the_kernel_is_complete_both_forms_give_the_same_force_for_a_gradient() 
     }
     let (sym, s) = (&results[0].0, &results[0].1);
     let dif = &results[1].0;
-    let support = s.model.h_m * 2.0; // Wendland C2: 2h
+    let support = s.model.kernel.support_over_h() * s.model.h_m;
     let half = N as f64 * L0 / 2.0;
     let volume = L0 * L0 * L0;
     let mut inner = 0;
+    let mut worst: f64 = 0.0;
     for i in 0..s.particles.n_fluid {
         let x = s.particles.pos[i];
         if x.iter().any(|c| c.abs() > half - support - L0) {
@@ -104,11 +105,17 @@ fn where_the_kernel_is_complete_both_forms_give_the_same_force_for_a_gradient() 
             sym[i],
             dif[i]
         );
-        // and it is −V ∇p to the lattice's first-moment error (measured below 1 %)
+        // and it is −V ∇p to the lattice's first-moment error
         let expected = Vec3::new(0.0, 0.0, -g * volume);
-        assert!((dif[i] - expected).norm() < 0.02 * g * volume, "{}", dif[i]);
+        worst = worst.max((dif[i] - expected).norm() / (g * volume));
     }
     assert!(inner >= 8, "{inner} interior particles");
+    // the kernel gradient's first moment on the lattice, Σ_j V_j (x_j − x_i) ⊗ ∇W, is not
+    // exactly the identity: measured 1.7e-3 at the scene's default kernel; 2 % leaves room
+    // for another default kernel, while a wrong sign or a missing volume factor is off by
+    // 100 % or more
+    println!("difference form against −V ∇p: largest relative error {worst:.2e}");
+    assert!(worst < 0.02, "relative error {worst:e}");
 }
 
 #[test]

@@ -176,12 +176,23 @@ pub(crate) fn check(c: &Context) -> Result<(), SimError> {
                 "liquid particle inside wall '{}' at ({:.4e}, {:.4e}, {:.4e}) m, more than {} l0 past its faces (health.max_wall_depth_over_l0 = {})",
                 m.walls[w].name, x.x, x.y, x.z, h.max_wall_depth_over_l0, h.max_wall_depth_over_l0
             ),
-            format!(
-                "the walls' pressure does not hold the liquid out of the gaps between wall particles: with a wide kernel (support {:.2} l0, h = {:.2} l0) the pressure gradient at the nearest-neighbour distance is weak, and the potential's cohesion pulls a wetting liquid in; use a kernel of support ≈ 2.1 l0 (wendland_c2 at h_over_l0 = 1.05, discretisation.setting = \"natsui2021\"), effects.wall_repulsion = true, or raise discretisation.sound_speed (now {} m/s); health.max_wall_depth_over_l0 = inf lets the run go on",
-                m.support_m / m.l0_m,
-                m.h_m / m.l0_m,
-                m.c_m_s
-            ),
+            if m.effects.interfacial_tension {
+                format!(
+                    "the walls' pressure does not hold the liquid out of the gaps between wall particles: with a wide kernel (support {:.2} l0, h = {:.2} l0) the pressure gradient at the nearest-neighbour distance is weak, and the potential's cohesion pulls a wetting liquid in; use a kernel of support ≈ 2.1 l0 (wendland_c2 at h_over_l0 = 1.05, discretisation.setting = \"natsui2021\"), effects.wall_repulsion = true, or raise discretisation.sound_speed (now {} m/s); health.max_wall_depth_over_l0 = inf lets the run go on",
+                    m.support_m / m.l0_m,
+                    m.h_m / m.l0_m,
+                    m.c_m_s
+                )
+            } else if m.effects.pressure_difference {
+                "in the difference form of the pressure force a wall resists only the difference between its extrapolated pressure and the liquid particle's, and where a wall particle's liquid neighbours are less compressed than the particle it pulls the particle in (an impact's spreading edge; docs/model.md §3): take density.pressure_gradient = \"symmetric\" for a scene with impacts; health.max_wall_depth_over_l0 = inf lets the run go on".to_string()
+            } else {
+                format!(
+                    "the walls' pressure does not hold the liquid out (kernel support {:.2} l0, h = {:.2} l0): raise discretisation.sound_speed (now {} m/s) so that the liquid is compressed less where it meets the wall; health.max_wall_depth_over_l0 = inf lets the run go on",
+                    m.support_m / m.l0_m,
+                    m.h_m / m.l0_m,
+                    m.c_m_s
+                )
+            },
         ));
     }
     if m.time.dt.is_none() && c.first_dt_s > 0.0 && stable < h.min_dt_ratio * c.first_dt_s {

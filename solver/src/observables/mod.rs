@@ -85,7 +85,7 @@ pub struct Observables {
     /// Energy the liquid lost to the difference form of the pressure force beyond the
     /// symmetric form's work since the start [J] (zero with the symmetric form): the work of
     /// `−V_i Σ_j V_j (p_j − p_i) ∇_i W_ij + Σ_j (p_i V_i² + p_j V_j²) ∇_i W_ij`, which is the
-    /// gradient of no energy; either sign. In the energy budget, not yet a time-series column.
+    /// gradient of no energy; either sign.
     pub dissipated_pressure_difference_j: f64,
     /// Compression energy removed by the density re-initialisations since the start [J]
     /// (either sign).

@@ -56,6 +56,9 @@ pub enum RunColumn {
     DissipatedArtificial,
     /// Energy the liquid lost to the walls' own (extrapolated) pressure [J].
     DissipatedWallPressure,
+    /// Energy the liquid lost to the difference form of the pressure force beyond the
+    /// symmetric form's work (zero with the symmetric form) [J].
+    DissipatedPressureDifference,
     /// Compression energy removed by density re-initialisation [J].
     DissipatedDensityReinit,
     /// Energy taken out by particle shifting [J].
@@ -74,7 +77,7 @@ pub enum RunColumn {
 
 impl RunColumn {
     /// Every column of the whole run, in file order.
-    pub const ALL: [RunColumn; 21] = [
+    pub const ALL: [RunColumn; 22] = [
         RunColumn::Time,
         RunColumn::Dt,
         RunColumn::Step,
@@ -87,6 +90,7 @@ impl RunColumn {
         RunColumn::DissipatedLaminarWalls,
         RunColumn::DissipatedArtificial,
         RunColumn::DissipatedWallPressure,
+        RunColumn::DissipatedPressureDifference,
         RunColumn::DissipatedDensityReinit,
         RunColumn::DissipatedShifting,
         RunColumn::EnergyBalance,
@@ -113,6 +117,7 @@ impl RunColumn {
             RunColumn::DissipatedLaminarWalls => "dissipated_laminar_walls_J".into(),
             RunColumn::DissipatedArtificial => "dissipated_artificial_J".into(),
             RunColumn::DissipatedWallPressure => "dissipated_wall_pressure_J".into(),
+            RunColumn::DissipatedPressureDifference => "dissipated_pressure_difference_J".into(),
             RunColumn::DissipatedDensityReinit => "dissipated_density_reinit_J".into(),
             RunColumn::DissipatedShifting => "dissipated_shifting_J".into(),
             RunColumn::EnergyBalance => "energy_balance_J".into(),
@@ -138,6 +143,7 @@ impl RunColumn {
             RunColumn::DissipatedLaminarWalls => o.dissipated_laminar_walls_j,
             RunColumn::DissipatedArtificial => o.dissipated_artificial_j,
             RunColumn::DissipatedWallPressure => o.dissipated_wall_pressure_j,
+            RunColumn::DissipatedPressureDifference => o.dissipated_pressure_difference_j,
             RunColumn::DissipatedDensityReinit => o.dissipated_density_reinit_j,
             RunColumn::DissipatedShifting => o.dissipated_shifting_j,
             RunColumn::EnergyBalance => o.energy_balance_j,

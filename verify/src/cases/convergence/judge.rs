@@ -219,8 +219,9 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
             .run(d.run)
             .note(format!(
                 "{status}reported, not judged: the total momentum's largest distance from its start over M·|v|max (all liquids' \
-                 mass, the run's largest speed): round-off where every pair force is antisymmetric; the difference form \
-                 of the pressure force is not, and conserves momentum only to its discretisation error"
+                 mass, the run's largest speed): round-off where every force is a pair's antisymmetric one; the surface \
+                 force (a force per particle) conserves it by symmetry only, the difference form of the pressure force \
+                 to its discretisation error"
             )),
         );
     }

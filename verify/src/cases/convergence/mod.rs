@@ -227,7 +227,7 @@ fn design(f: Fidelity) -> Design {
             css_drops: vec![5.0, 6.0],
             // not the difference form's drop: at 5 and 6 spacings per radius it renews its
             // neighbour lists 6 times as often as the surface force's (its particles move
-            // more) and took 196 s of one thread, the smoke case's 510 s without it
+            // more) and took 196 of the smoke case's 510 s of one thread
             drop_models: &HOST_MODELS[..2],
             caps: vec![5.0, 6.0, 7.0],
             // two, as the drops: a cap with its gas is 17 times the potential's particles, and

@@ -80,7 +80,8 @@ pub struct Observables {
     pub dissipated_artificial_j: f64,
     /// Energy the liquid lost to the walls' own pressure `p_w V_w²` since the start [J]: not
     /// a physical dissipation but the work of a force that is the gradient of no energy (the
-    /// extrapolated wall pressure, Adami 2012); either sign.
+    /// extrapolated wall pressure, Adami 2012); either sign. In the difference form it is the
+    /// wall pairs' whole departure from `−p_i V_i² ∇_i W_iw`, the compression energy's part.
     pub dissipated_wall_pressure_j: f64,
     /// Energy the liquid lost to the difference form of the pressure force beyond the
     /// symmetric form's work since the start [J] (zero with the symmetric form): the work of

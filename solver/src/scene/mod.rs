@@ -526,6 +526,13 @@ fn f_4() -> f64 {
     4.0
 }
 
+impl Default for ParticleShifting {
+    /// The documented default coefficient.
+    fn default() -> Self {
+        ParticleShifting { coefficient: f_4() }
+    }
+}
+
 /// Coefficients of Monaghan's artificial viscosity.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]

@@ -175,6 +175,12 @@ impl SceneBuilder {
         self
     }
 
+    /// Particle shifting at its default coefficient on or off.
+    pub fn particle_shifting(mut self, on: bool) -> Self {
+        self.scene.effects.particle_shifting = on.then(solver::scene::ParticleShifting::default);
+        self
+    }
+
     /// The short-range liquid–wall repulsion on or off.
     pub fn wall_repulsion(mut self, on: bool) -> Self {
         self.scene.effects.wall_repulsion = on;

@@ -33,7 +33,14 @@
 //!   ∇_i W_ij` for liquid pairs and at walls instead of Eq. (11)'s symmetric form, whose
 //!   pressure level stiffens the particles' arrangement and holds a receding contact line.
 //!   The drops' tables give each continuum model's momentum drift, which this form alone does
-//!   not hold to round-off. (The smoke fidelity runs its caps, not its drop.)
+//!   not hold to round-off. (The smoke fidelity runs its caps, not its drop.) Then the same
+//!   again with particle shifting (`effects.particle_shifting`), which keeps the arrangement
+//!   that this form does not hold from disordering: without it the free drop gains kinetic
+//!   energy. (Not at smoke fidelity.)
+//! - **The surface force (wall normal) with a wider kernel**, `h = 1.6 l0` instead of 1.3, in the
+//!   symmetric form, which conserves energy and momentum: a smoother kernel gives the pressure
+//!   level less stiffness of the particles' arrangement to hold a receding line with. Its drop
+//!   and its caps. (Not at smoke fidelity.)
 //!
 //! Each metric's error is fitted as `|error| ∝ l0^p` ([`observed_order`]); a metric whose error
 //! does not fall from the coarsest to the finest spacing does not converge, and the case says so.
@@ -118,6 +125,10 @@ const HOST_BOX_OVER_R: f64 = 3.0;
 /// `h/l0` of the continuum models' drops: the 2D prototypes' (a colour kernel of 1.3 l0 paired
 /// them; the colour kernel here reaches r_e = 4.2 l0).
 const CSS_H_OVER_L0: f64 = 1.3;
+/// `h/l0` of [`WIDE_KERNEL`]: on a receding ridge (R/l0 = 8) the symmetric form's stop rose
+/// from 111.6° to 116.9° at 1.6 and 117.8° at 2.0 (typed 120°, docs/findings.md), so 1.6
+/// takes most of it at (1.6/1.3)³ = 1.9 times the kernel's neighbours.
+const WIDE_H_OVER_L0: f64 = 1.6;
 
 /// A continuum model whose drop in a host the case runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -131,6 +142,8 @@ pub struct HostModel {
     /// Particle shifting at its default coefficient (`effects.particle_shifting`, docs/model.md
     /// §3), or none.
     pub shifting: bool,
+    /// The smoothing length over the spacing, `h/l0` [-].
+    pub h_over_l0: f64,
     /// The prefix of its run ids and figures.
     pub id: &'static str,
     /// The prefix of its metrics' labels.
@@ -142,12 +155,13 @@ pub struct HostModel {
 }
 
 /// The continuum models whose drops the case runs, in the order it reports them.
-pub const HOST_MODELS: [HostModel; 4] = [
+pub const HOST_MODELS: [HostModel; 5] = [
     HostModel {
         model: TensionModel::SurfaceStress,
         walls: SurfaceForceWalls::Shares,
         pressure: PressureGradient::Symmetric,
         shifting: false,
+        h_over_l0: CSS_H_OVER_L0,
         id: "css",
         label: "surface-stress drop",
         name: "surface stress",
@@ -158,6 +172,7 @@ pub const HOST_MODELS: [HostModel; 4] = [
         walls: SurfaceForceWalls::Shares,
         pressure: PressureGradient::Symmetric,
         shifting: false,
+        h_over_l0: CSS_H_OVER_L0,
         id: "csf",
         label: "surface-force drop",
         name: "surface force",
@@ -165,6 +180,7 @@ pub const HOST_MODELS: [HostModel; 4] = [
     },
     DIFFERENCE,
     DIFFERENCE_SHIFTED,
+    WIDE_KERNEL,
 ];
 
 /// The surface force with the wall normal's walls (docs/model.md §4b): its caps only (its
@@ -174,6 +190,7 @@ pub const WALL_NORMAL: HostModel = HostModel {
     walls: SurfaceForceWalls::Normal,
     pressure: PressureGradient::Symmetric,
     shifting: false,
+    h_over_l0: CSS_H_OVER_L0,
     id: "csfn",
     label: "surface-force (wall normal) drop",
     name: "surface force (wall normal)",
@@ -189,6 +206,7 @@ pub const DIFFERENCE: HostModel = HostModel {
     walls: SurfaceForceWalls::Normal,
     pressure: PressureGradient::Difference,
     shifting: false,
+    h_over_l0: CSS_H_OVER_L0,
     id: "csfd",
     label: "surface-force (difference pressure) drop",
     name: "surface force (wall normal, difference pressure)",
@@ -206,21 +224,46 @@ pub const DIFFERENCE_SHIFTED: HostModel = HostModel {
     ..DIFFERENCE
 };
 
+/// [`WALL_NORMAL`] (the symmetric pressure force, which conserves energy and momentum) with a
+/// wider kernel, `h = 1.6 l0`: the pressure level's stiffness of the particles' arrangement,
+/// which holds a receding contact line, falls with the kernel's smoothness (docs/model.md §3).
+pub const WIDE_KERNEL: HostModel = HostModel {
+    h_over_l0: WIDE_H_OVER_L0,
+    id: "csfw",
+    label: "surface-force (h = 1.6 l0) drop",
+    name: "surface force (wall normal, h = 1.6 l0)",
+    section: "§3, §4b",
+    ..WALL_NORMAL
+};
+
 /// The surface force's treatments of walls and of the pressure, whose caps the case runs.
-pub const CAP_MODELS: [HostModel; 4] =
-    [HOST_MODELS[1], WALL_NORMAL, DIFFERENCE, DIFFERENCE_SHIFTED];
+pub const CAP_MODELS: [HostModel; 5] = [
+    HOST_MODELS[1],
+    WALL_NORMAL,
+    DIFFERENCE,
+    DIFFERENCE_SHIFTED,
+    WIDE_KERNEL,
+];
 
 impl HostModel {
     /// The continuum model of a scene, if it is one: its tension model, its walls' part in
-    /// the surface force, and its pressure force's form.
+    /// the surface force, its pressure force's form, shifting, and its `h/l0` (a scene at an
+    /// `h/l0` no model declares, as `--set` makes, is the model of the case's default one).
     pub fn of(scene: &solver::Scene) -> Option<HostModel> {
         let e = &scene.effects;
-        HOST_MODELS.into_iter().chain([WALL_NORMAL]).find(|m| {
+        let kind = |m: &HostModel| {
             m.model == e.interfacial_tension
                 && m.walls == e.surface_force_walls
                 && m.pressure == scene.density.pressure_gradient
                 && m.shifting == e.particle_shifting.is_some()
-        })
+        };
+        let with_h = |h: f64| {
+            HOST_MODELS
+                .into_iter()
+                .chain([WALL_NORMAL])
+                .find(|m| kind(m) && m.h_over_l0 == h)
+        };
+        with_h(scene.discretisation.h_over_l0).or_else(|| with_h(CSS_H_OVER_L0))
     }
 }
 
@@ -252,9 +295,10 @@ fn design(f: Fidelity) -> Design {
             // neighbour lists 6 times as often as the surface force's (its particles move
             // more) and took 196 of the smoke case's 510 s of one thread
             drop_models: &HOST_MODELS[..2],
-            // not the shifted difference form's: its caps follow the difference form's (the
-            // scratch 120° cap at R/l0 = 8: 115.1° against 115.2° at 10 ms), and two more smoke
-            // caps cost CI about 40 s of one thread
+            // not the shifted difference form's nor the wide kernel's: the first's caps follow
+            // the difference form's (the 120° cap at R/l0 = 8: 120.1° against 121.1°), the
+            // second is the wall normal's at another h/l0, and each pair of smoke caps costs CI
+            // about 40 s of one thread (the wide kernel's 1.9 times that)
             cap_models: &CAP_MODELS[..3],
             caps: vec![5.0, 6.0, 7.0],
             // two, as the drops: a cap with its gas is 17 times the potential's particles, and
@@ -380,11 +424,7 @@ fn css_drop_scene(f: Fidelity, m: &HostModel, r_over_l0: f64) -> solver::Scene {
     let (center, semi_axes) = ([0.0; 3], [a, a, c]);
     SceneBuilder::new(l0, css_sound_speed_m_s())
         .time(FIT_FROM_S + periods * host_period_s(), 1e-4)
-        .kernel(
-            KernelKind::WendlandC2,
-            CSS_H_OVER_L0,
-            Natsui2021.re_over_l0(),
-        )
+        .kernel(KernelKind::WendlandC2, m.h_over_l0, Natsui2021.re_over_l0())
         .paper_effects()
         .tension_model(m.model)
         .surface_force_walls(m.walls)
@@ -443,11 +483,7 @@ fn csf_cap_scene(f: Fidelity, m: &HostModel, theta_deg: f64, n: f64) -> solver::
     let top = (CAP_BOX_HEIGHT_OVER_R * n).round() * l0;
     let b = SceneBuilder::new(l0, laplace_sound_speed(&VISCOUS_MATTE, RADIUS_M))
         .time(end_times_s(f).1, 2e-4)
-        .kernel(
-            KernelKind::WendlandC2,
-            CSS_H_OVER_L0,
-            Natsui2021.re_over_l0(),
-        )
+        .kernel(KernelKind::WendlandC2, m.h_over_l0, Natsui2021.re_over_l0())
         .paper_effects()
         .tension_model(m.model)
         .surface_force_walls(m.walls)

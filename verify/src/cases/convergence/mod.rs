@@ -38,9 +38,8 @@
 //!   that this form does not hold from disordering: without it the free drop gains kinetic
 //!   energy. (Not at smoke fidelity.)
 //! - **The surface force (wall normal) with a wider kernel**, `h = 1.6 l0` instead of 1.3, in the
-//!   symmetric form, which conserves energy and momentum: a smoother kernel gives the pressure
-//!   level less stiffness of the particles' arrangement to hold a receding line with. Its drop
-//!   and its caps. (Not at smoke fidelity.)
+//!   symmetric form, which conserves energy and momentum: under a wider kernel the pressure
+//!   level holds a receding line less. Its drop and its caps. (Not at smoke fidelity.)
 //!
 //! Each metric's error is fitted as `|error| ∝ l0^p` ([`observed_order`]); a metric whose error
 //! does not fall from the coarsest to the finest spacing does not converge, and the case says so.
@@ -126,8 +125,9 @@ const HOST_BOX_OVER_R: f64 = 3.0;
 /// them; the colour kernel here reaches r_e = 4.2 l0).
 const CSS_H_OVER_L0: f64 = 1.3;
 /// `h/l0` of [`WIDE_KERNEL`]: on a receding ridge (R/l0 = 8) the symmetric form's stop rose
-/// from 111.6° to 116.9° at 1.6 and 117.8° at 2.0 (typed 120°, docs/findings.md), so 1.6
-/// takes most of it at (1.6/1.3)³ = 1.9 times the kernel's neighbours.
+/// from 111.6° at 1.3 to 113.0°, 116.9°, 117.6°, 117.8° at 1.4, 1.6, 1.8, 2.0 (typed 120°,
+/// docs/findings.md), so 1.6 takes most of it at (1.6/1.3)³ = 1.9 times the kernel's
+/// neighbours.
 const WIDE_H_OVER_L0: f64 = 1.6;
 
 /// A continuum model whose drop in a host the case runs.
@@ -225,8 +225,8 @@ pub const DIFFERENCE_SHIFTED: HostModel = HostModel {
 };
 
 /// [`WALL_NORMAL`] (the symmetric pressure force, which conserves energy and momentum) with a
-/// wider kernel, `h = 1.6 l0`: the pressure level's stiffness of the particles' arrangement,
-/// which holds a receding contact line, falls with the kernel's smoothness (docs/model.md §3).
+/// wider kernel, `h = 1.6 l0`: the hold the pressure level gives the particles' arrangement
+/// against a receding contact line weakens as the kernel widens (docs/model.md §3).
 pub const WIDE_KERNEL: HostModel = HostModel {
     h_over_l0: WIDE_H_OVER_L0,
     id: "csfw",

@@ -654,6 +654,23 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_scene_at_an_h_no_model_declares_is_the_default_h_model_of_its_kind() {
+        let mut s = csf_cap_scene(Fidelity::Smoke, &WALL_NORMAL, 60.0, 5.0);
+        assert_eq!(HostModel::of(&s), Some(WALL_NORMAL));
+        s.discretisation.h_over_l0 = WIDE_H_OVER_L0;
+        assert_eq!(HostModel::of(&s), Some(WIDE_KERNEL));
+        // as `--set discretisation.h_over_l0=1.45` makes it
+        s.discretisation.h_over_l0 = 1.45;
+        assert_eq!(HostModel::of(&s), Some(WALL_NORMAL));
+        s.effects.particle_shifting = Some(Default::default());
+        assert_eq!(
+            HostModel::of(&s),
+            None,
+            "shifting with the symmetric form: no model"
+        );
+    }
+
+    #[test]
     fn runs_cover_every_resolution_with_the_declared_shapes() {
         for f in [Fidelity::Smoke, Fidelity::Standard, Fidelity::Paper] {
             let d = design(f);

@@ -77,6 +77,18 @@ pub struct Metric {
     pub wall_time_s: f64,
     /// What the number means, how it was measured, or why it missed.
     pub note: String,
+    /// Whether the run measured reached its end time (`true` for a metric of no one run): a
+    /// metric of a run that stopped early fails whatever its value.
+    #[serde(default = "yes", skip_serializing_if = "is_yes")]
+    pub run_completed: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+fn is_yes(b: &bool) -> bool {
+    *b
 }
 
 impl Metric {
@@ -93,6 +105,7 @@ impl Metric {
             particles: 0,
             wall_time_s: 0.0,
             note: String::new(),
+            run_completed: true,
         }
     }
 
@@ -145,6 +158,7 @@ impl Metric {
     pub fn run(mut self, run: &super::RunData) -> Self {
         self.particles = run.info.fluid_particles;
         self.wall_time_s = run.info.wall_time_s;
+        self.run_completed = run.completed();
         self
     }
 
@@ -159,11 +173,13 @@ impl Metric {
         self.reference.map(|r| self.value - r)
     }
 
-    /// Pass/fail against the tolerance, if there is one (a NaN value fails).
+    /// Pass/fail against the tolerance, if there is one (a NaN value fails, and so does any
+    /// value of a run that stopped early: its last state is not the settled one the metric
+    /// judges).
     pub fn pass(&self) -> Option<bool> {
         let err = self.error()?;
         let tol = self.tolerance.as_ref()?;
-        Some(err.is_finite() && err.abs() <= tol.abs)
+        Some(self.run_completed && err.is_finite() && err.abs() <= tol.abs)
     }
 }
 
@@ -188,6 +204,19 @@ mod tests {
                 .pass(),
             Some(true)
         );
+    }
+
+    #[test]
+    fn a_value_of_a_run_that_stopped_early_fails_and_says_so_in_json() {
+        let t = Tolerance::absolute(2.0, "t");
+        let mut m = Metric::new("c", "cap", "deg", 120.0).against(120.0, t);
+        assert_eq!(m.pass(), Some(true));
+        // a completed run's metric is written as before: no new field
+        assert!(!serde_json::to_string(&m).unwrap().contains("run_completed"));
+        m.run_completed = false;
+        assert_eq!(m.pass(), Some(false));
+        let back: Metric = serde_json::from_str(&serde_json::to_string(&m).unwrap()).unwrap();
+        assert_eq!((back.run_completed, back.pass()), (false, Some(false)));
     }
 
     #[test]

@@ -236,11 +236,13 @@ fn cap_table(caps: &[CapPoint]) -> String {
         v
     };
     let name = |m: &Option<HostModel>| m.map_or("potential", |h| h.name);
-    let mut s = String::from(
+    let mut s = format!(
         "\n## The caps, model by model\n\n\
          The angle of the spherical cap of the drop's volume and its settled height (the last quarter's mean), \
          its error against the typed angle, and the side-view fit on the last state. The continuum model's caps sit in \
-         a host without a surface tension (the gas of Young's relation) at 0.7 Pa·s.\n\n| typed | n = R/l0 |",
+         a host without a surface tension (the gas of Young's relation) at {} Pa·s, on a plate of {} layers.\n\n| typed | n = R/l0 |",
+        super::CAP_HOST.viscosity_pa_s,
+        super::cap_plate_layers()
     );
     for m in &models {
         let _ = write!(

@@ -231,11 +231,12 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
 fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {
     let (theta, n) = (c.typed_deg, c.n);
     let prefix = cap_prefix(c);
-    let host = match c.host_model {
-        Some(_) => {
-            "; in a host without a surface tension (the gas of Young's relation), at 0.7 Pa·s"
-        }
-        None => "",
+    let host = match (c.host_model, c.run.info.scene.liquids.get(1)) {
+        (Some(_), Some(gas)) => format!(
+            "; in a host without a surface tension (the gas of Young's relation), at {} Pa·s",
+            gas.viscosity
+        ),
+        _ => String::new(),
     };
     let status = c.run.status_note();
     let target = angle_target_deg(theta);

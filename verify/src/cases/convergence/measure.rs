@@ -153,7 +153,7 @@ pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
     // the potential's first, then the continuum models' in the case's order
     let model_rank = |c: &CapPoint| {
         c.host_model
-            .and_then(|h| super::CAP_MODELS.iter().position(|m| *m == h))
+            .and_then(|h| super::CAP_ORDER.iter().position(|m| *m == h))
             .map_or(0, |k| k + 1)
     };
     m.caps.sort_by(|a, b| {

@@ -320,6 +320,18 @@ impl SceneBuilder {
         });
         self
     }
+
+    /// The last wall added with `layers` layers of particles instead of the default (enough
+    /// for the kernels' reach from one face).
+    pub fn wall_layers(mut self, layers: u32) -> Self {
+        let wall = self
+            .scene
+            .walls
+            .last_mut()
+            .expect("wall_layers follows a wall");
+        wall.layers = Some(layers);
+        self
+    }
 }
 
 #[cfg(test)]

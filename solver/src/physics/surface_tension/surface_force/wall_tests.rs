@@ -443,7 +443,6 @@ fn with_the_wall_normal_a_cap_off_its_angle_is_pushed_towards_it_as_young_says()
     }
 }
 
-
 /// The static cap's push at its foot against its size: a line tension `τ` pushes a circular
 /// line of radius `a` by `−τ/a` per length, an error in the angle's force by a constant. Caps
 /// of radius 10, 14, 20 l0 (feet of 2.1–4.8 r_e) at 60°, 90°, 120°, the surface force alone,

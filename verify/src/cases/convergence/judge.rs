@@ -69,10 +69,7 @@ pub fn cap_series(caps: &[CapPoint], declared: &Declared) -> Vec<Series> {
     let mut groups: Vec<(String, f64, usize)> = caps
         .iter()
         .map(|c| {
-            let expected = match c.host_model {
-                Some(_) => declared.css_caps,
-                None => declared.caps,
-            };
+            let expected = declared.caps_of(c.host_model);
             (cap_prefix(c), c.typed_deg, expected)
         })
         .collect();

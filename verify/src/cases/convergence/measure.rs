@@ -111,6 +111,19 @@ pub struct Declared {
     pub caps: usize,
     /// Each continuum model's cap at each angle.
     pub css_caps: usize,
+    /// The continuum models whose caps leave out the finest of those.
+    pub baseline_cap_models: &'static [HostModel],
+}
+
+impl Declared {
+    /// The resolutions declared for a cap of `model` (`None`: the potential's) at each angle.
+    pub fn caps_of(&self, model: Option<HostModel>) -> usize {
+        match model {
+            Some(m) if self.baseline_cap_models.contains(&m) => self.css_caps - 1,
+            Some(_) => self.css_caps,
+            None => self.caps,
+        }
+    }
 }
 
 /// The continuum model of `run`'s drop in a host, if it is one.
@@ -148,6 +161,7 @@ pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
             host_drops: d.css_drops.len(),
             caps: d.caps.len(),
             css_caps: d.css_caps.len(),
+            baseline_cap_models: d.baseline_cap_models,
         },
     };
     // the potential's first, then the continuum models' in the case's order

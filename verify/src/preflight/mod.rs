@@ -1,6 +1,7 @@
 //! Checks of a resolved scene before its first step: inputs no real liquid or solid has (a unit
-//! slipped: 72.8 typed for σ in N/m), bodies too coarse or too thin for the potential, and a
-//! sound speed the scene's cohesion or flow cannot live with.
+//! slipped: 72.8 typed for σ in N/m), bodies too coarse or too thin for the potential, a
+//! sound speed the scene's cohesion or flow cannot live with, and walls a continuum model's
+//! colour crosses.
 //!
 //! Each [`Finding`] says what was found, the likely cause, and the value that would fix it.
 //! They are warnings: a run prints them on stderr and records them in `run_info.json`;
@@ -11,6 +12,7 @@
 mod inputs;
 mod resolution;
 mod sound;
+mod walls;
 
 pub use sound::{step_estimate, StepEstimate};
 
@@ -39,6 +41,9 @@ pub enum Check {
     CohesiveSoundSpeed,
     /// A sound speed below ten times the fastest speed the scene implies.
     FlowSoundSpeed,
+    /// A wall a continuum model's colour crosses: thinner than `2 r_e` with fluid on both
+    /// faces.
+    ThinWall,
 }
 
 impl Check {
@@ -54,6 +59,7 @@ impl Check {
             Check::Film => "film",
             Check::CohesiveSoundSpeed => "sound speed (cohesion)",
             Check::FlowSoundSpeed => "sound speed (flow)",
+            Check::ThinWall => "thin wall",
         }
     }
 }
@@ -92,6 +98,7 @@ pub fn check(scene: &Scene) -> Vec<Finding> {
     let mut out = inputs::findings(scene);
     out.extend(resolution::findings(scene));
     out.extend(sound::findings(scene));
+    out.extend(walls::findings(scene));
     out
 }
 

@@ -99,9 +99,9 @@ const VISCOUS_MATTE: LiquidProps = LiquidProps {
 /// The host of the surface force's caps: the drop's density at a tenth of its viscosity,
 /// declared without a surface tension (its σ is not read). In a host as viscous as the drop
 /// (0.7 Pa·s, until revision 3c202d8) the 30° caps were still spreading at 20 ms (41.0° at
-/// R/l0 = 8 under the wide kernel, falling by 0.5°/ms), where in this one the same cap is at
-/// 30.0° from 12 ms on (docs/findings.md): the case measures static angles, so the gas must let
-/// a cap settle within the run.
+/// R/l0 = 8 under the wide kernel, falling by 0.5°/ms), where in this one the same cap reaches
+/// 30° at 12 ms (docs/findings.md): the case measures static angles, so the gas must let a cap
+/// reach its rest within the run.
 const CAP_HOST: LiquidProps = LiquidProps {
     name: "host",
     viscosity_pa_s: 0.07,
@@ -265,7 +265,8 @@ pub const CAP_MODELS: [HostModel; 2] = [DIFFERENCE_SHIFTED, WIDE_KERNEL];
 /// The treatments whose caps the case runs at all resolutions but the finest: the surface
 /// force's default walls (a phase of the split) and the wall normal at `h = 1.3 l0`, the
 /// baselines of the candidates; a cap at 16 spacings per radius costs about 4 hours of one
-/// thread, and their errors at 8 and 11 did not fall (docs/findings.md).
+/// thread, and in the case's first design their 120° caps stayed 7–13° short at 8, 11 and 16
+/// (docs/findings.md).
 pub const BASELINE_CAP_MODELS: [HostModel; 2] = [HOST_MODELS[1], WALL_NORMAL];
 
 /// Every surface-force treatment whose caps a fidelity runs, in the order the reports give them.

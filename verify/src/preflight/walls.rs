@@ -70,63 +70,17 @@ fn reaches_below(shape: &BodyShape, z: f64, l0: f64) -> bool {
 mod tests {
     use super::*;
 
-    /// A hemisphere of liquid on a plate of `layers` layers (none: the default) in a host,
-    /// under the surface force, with a periodic z axis if `periodic_z`.
+    /// The example `scenes/cap_in_host.toml` (a hemisphere on a plate in a host, periodic
+    /// along z) with its plate of `layers` layers (none: the default), and its z axis periodic
+    /// or not.
     fn cap(layers: Option<u32>, periodic_z: bool) -> Scene {
-        let layers = layers.map_or(String::new(), |n| format!("layers = {n}"));
-        let z = if periodic_z {
-            "z = [-9.0e-4, 2.0e-3]"
-        } else {
-            ""
-        };
-        Scene::from_toml_str(&format!(
-            r#"
-            [discretisation]
-            l0 = 1e-4
-            h_over_l0 = 1.3
-            re_over_l0 = 4.2
-            sound_speed = 4.0
-            [time]
-            end = 1e-3
-            output_interval = 1e-4
-            [effects]
-            interfacial_tension = "surface_force"
-            [periodic]
-            x = [-2e-3, 2e-3]
-            y = [-2e-3, 2e-3]
-            {z}
-            [[liquid]]
-            name = "melt"
-            density = 4500.0
-            viscosity = 0.7
-            surface_tension = 0.4
-            [[liquid]]
-            name = "host"
-            density = 4500.0
-            viscosity = 0.07
-            [[interface]]
-            liquids = ["melt", "host"]
-            tension = 0.4
-            [[solid]]
-            name = "plate"
-            contact_angles = {{ melt = 60.0 }}
-            [[body]]
-            name = "cap"
-            liquid = "melt"
-            shape = {{ kind = "hemisphere", center = [0.0, 0.0, 0.0], radius = 1.0e-3, pole = [0.0, 0.0, 1.0] }}
-            [[body]]
-            name = "host"
-            liquid = "host"
-            shape = {{ kind = "surrounding", min = [-2e-3, -2e-3, 0.0], max = [2e-3, 2e-3, 2e-3] }}
-            [[wall]]
-            name = "plate"
-            solid = "plate"
-            shape = {{ kind = "plate", min = [-2e-3, -2e-3], max = [2e-3, 2e-3], top = 0.0 }}
-            boundary = "free_slip"
-            {layers}
-            "#
-        ))
-        .unwrap()
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/cap_in_host.toml");
+        let mut scene = Scene::from_toml_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+        scene.walls[0].layers = layers;
+        if !periodic_z {
+            scene.periodic.z = None;
+        }
+        scene
     }
 
     #[test]

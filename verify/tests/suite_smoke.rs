@@ -5,6 +5,7 @@
 mod common;
 use common::Quiet;
 use std::path::PathBuf;
+use verify::suite::overrides::SceneOverride;
 use verify::suite::runner::{self, SuiteOptions};
 use verify::suite::{Case, Fidelity, Metric};
 
@@ -117,7 +118,8 @@ fn cube_drop_smoke() {
         .unwrap()
         .modified()
         .unwrap();
-    let again = runner::analyse_case(case("cube_drop").as_ref(), Fidelity::Smoke, &out).unwrap();
+    let again =
+        runner::analyse_case(case("cube_drop").as_ref(), Fidelity::Smoke, &out, &[]).unwrap();
     assert!(plot.exists());
     assert_eq!(summary(&again), summary(&m));
     let opts = SuiteOptions {
@@ -141,6 +143,17 @@ fn cube_drop_smoke() {
         stamp, stamp2,
         "a finished run is reused, not simulated again"
     );
+
+    // a folder holding another scene's run is stale: measured under other `--set` keys, no
+    // run is the case's, so none is measured (a stale run reported as current was the defect)
+    let other: Vec<SceneOverride> = vec!["discretisation.sound_speed=13.0".parse().unwrap()];
+    let stale = runner::analyse_case(case("cube_drop").as_ref(), Fidelity::Smoke, &out, &other);
+    let stale = stale.unwrap();
+    assert!(stale.is_empty(), "{}", summary(&stale)); // no run measured: no metric
+                                                      // the suite's record keeps the keys, so that `verify report` measures what the suite ran
+    runner::write_record(&out, Fidelity::Smoke, &other).unwrap();
+    let kept = runner::read_record(&out).unwrap().overrides().unwrap();
+    assert_eq!(kept, other);
     let _ = std::fs::remove_dir_all(&out);
 }
 

@@ -108,7 +108,7 @@ pub(crate) fn run_suite(
             }
         }
     }
-    runner::write_record(&opts.out, opts.fidelity)?;
+    runner::write_record(&opts.out, opts.fidelity, &opts.overrides)?;
     let mut tally = verify::suite::tally::RunTally::default();
     for case in &cases {
         if names.is_some_and(|n| !n.iter().any(|x| x == case.name())) {
@@ -153,10 +153,11 @@ pub(crate) fn run_suite(
 
 pub(crate) fn report(out: &Path) -> anyhow::Result<i32> {
     let record = runner::read_record(out)?;
+    let overrides = record.overrides()?;
     let cases = cases::all();
     for case in &cases {
         if out.join(case.name()).exists() {
-            runner::analyse_case(case.as_ref(), record.fidelity, out)?;
+            runner::analyse_case(case.as_ref(), record.fidelity, out, &overrides)?;
         }
     }
     summary::write_all(out, record.fidelity, &cases, None)?;

@@ -32,13 +32,17 @@ pub fn collect(dir: &Path) -> anyhow::Result<Collected> {
     }
     let summary = match &plan.kind {
         Kind::Suite {
-            fidelity, cases, ..
+            fidelity,
+            cases,
+            set,
+            ..
         } => {
-            runner::write_record(dir, *fidelity)?;
+            let overrides = super::write::suite_options(dir, *fidelity, set, false)?.overrides;
+            runner::write_record(dir, *fidelity, &overrides)?;
             let all = cases::all();
             for case in all.iter().filter(|c| cases.iter().any(|n| n == c.name())) {
                 std::fs::create_dir_all(dir.join(case.name()))?;
-                runner::analyse_case(case.as_ref(), *fidelity, dir)?;
+                runner::analyse_case(case.as_ref(), *fidelity, dir, &overrides)?;
             }
             summary::write_all(dir, *fidelity, &all, None)?;
             dir.join("summary.md")

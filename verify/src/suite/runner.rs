@@ -64,6 +64,20 @@ impl std::error::Error for Interrupted {}
 pub struct SuiteRecord {
     /// The fidelity the runs were made at.
     pub fidelity: Fidelity,
+    /// The scene keys set in every run (`--set KEY=VALUE`, as given; empty for the cases as
+    /// written; absent in records written before they were kept).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub set: Vec<String>,
+}
+
+impl SuiteRecord {
+    /// The record's `--set` overrides, parsed.
+    pub fn overrides(&self) -> anyhow::Result<Vec<super::overrides::SceneOverride>> {
+        self.set
+            .iter()
+            .map(|s| s.parse().map_err(|e: String| anyhow::anyhow!(e)))
+            .collect()
+    }
 }
 
 /// Simulates the missing runs of `case`, then measures it; returns its metrics and writes
@@ -72,7 +86,7 @@ pub fn run_case(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<Metr
     for spec in &specs_of(case, opts)? {
         run_spec(case, spec, opts)?;
     }
-    analyse_case(case, opts.fidelity, &opts.out)
+    analyse_case(case, opts.fidelity, &opts.out, &opts.overrides)
 }
 
 /// The runs of `case` at `opts.fidelity` as the suite runs them: `--only` kept, `--set`
@@ -162,23 +176,38 @@ pub fn run_spec(case: &dyn Case, spec: &RunSpec, opts: &SuiteOptions) -> anyhow:
     Ok(())
 }
 
-/// Measures `case` from the runs saved under `out` (no simulation).
+/// Measures `case` from the runs saved under `out` (no simulation): each run whose folder
+/// holds a finished run of exactly the scene the case gives it at `fidelity` with `overrides`
+/// (`--set`) applied. A folder holding another scene's run (an older design of the case,
+/// another fidelity, other `--set` keys) is stale: it is named on stderr and not measured, so
+/// the case reports that run as missing rather than another scene's result as its own.
 pub fn analyse_case(
     case: &dyn Case,
     fidelity: Fidelity,
     out: &Path,
+    overrides: &[super::overrides::SceneOverride],
 ) -> anyhow::Result<Vec<Metric>> {
     let dir = out.join(case.name());
     let mut runs = Vec::new();
-    for spec in case.runs(fidelity) {
+    for mut spec in case.runs(fidelity) {
         let rdir = dir.join(&spec.id);
         // a run still going (or killed) has no final state yet: not measured
-        if RunInfo::path(&rdir).exists() && rdir.join(snapshots::FINAL).exists() {
-            runs.push(
-                saved::load_run(&rdir, &spec)
-                    .with_context(|| format!("reading {}", rdir.display()))?,
-            );
+        if !(RunInfo::path(&rdir).exists() && rdir.join(snapshots::FINAL).exists()) {
+            continue;
         }
+        spec.scene = super::overrides::apply(&spec.scene, overrides)
+            .with_context(|| format!("{}/{}", case.name(), spec.id))?;
+        if !saved::reusable(&rdir, &spec) {
+            eprintln!(
+                "{}: a run of another scene (an older design of the case, another fidelity or \
+                 other --set keys); not measured. Run the case again, or remove the folder",
+                rdir.display()
+            );
+            continue;
+        }
+        runs.push(
+            saved::load_run(&rdir, &spec).with_context(|| format!("reading {}", rdir.display()))?,
+        );
     }
     let metrics = case.analyse(fidelity, &runs, &dir)?;
     summary_csv::write(&dir.join("summary.csv"), &metrics)?;
@@ -201,9 +230,14 @@ pub fn saved_metrics(out: &Path, cases: &[Box<dyn Case>]) -> anyhow::Result<Vec<
 }
 
 /// Writes the record `verify report` reads.
-pub fn write_record(out: &Path, fidelity: Fidelity) -> anyhow::Result<()> {
+pub fn write_record(
+    out: &Path,
+    fidelity: Fidelity,
+    overrides: &[super::overrides::SceneOverride],
+) -> anyhow::Result<()> {
     std::fs::create_dir_all(out)?;
-    let json = serde_json::to_string_pretty(&SuiteRecord { fidelity })?;
+    let set = overrides.iter().map(ToString::to_string).collect();
+    let json = serde_json::to_string_pretty(&SuiteRecord { fidelity, set })?;
     crate::output::atomic_write(&out.join("suite.json"), json.as_bytes())?;
     Ok(())
 }

@@ -151,9 +151,12 @@ fn cube_drop_smoke() {
     let stale = stale.unwrap();
     assert!(stale.is_empty(), "{}", summary(&stale)); // no run measured: no metric
                                                       // the suite's record keeps the keys, so that `verify report` measures what the suite ran
-    runner::write_record(&out, Fidelity::Smoke, &other).unwrap();
-    let kept = runner::read_record(&out).unwrap().overrides().unwrap();
-    assert_eq!(kept, other);
+                                                      // (per case: another case run as written keeps its own record)
+    runner::write_record(&out, Fidelity::Smoke, &["cube_drop"], &other).unwrap();
+    runner::write_record(&out, Fidelity::Smoke, &["shear_wave"], &[]).unwrap();
+    let record = runner::read_record(&out).unwrap();
+    assert_eq!(record.overrides("cube_drop").unwrap(), other);
+    assert!(record.overrides("shear_wave").unwrap().is_empty());
     let _ = std::fs::remove_dir_all(&out);
 }
 

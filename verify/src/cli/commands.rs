@@ -108,7 +108,12 @@ pub(crate) fn run_suite(
             }
         }
     }
-    runner::write_record(&opts.out, opts.fidelity, &opts.overrides)?;
+    let ran: Vec<&str> = cases
+        .iter()
+        .map(|c| c.name())
+        .filter(|c| names.is_none_or(|n| n.iter().any(|x| x == c)))
+        .collect();
+    runner::write_record(&opts.out, opts.fidelity, &ran, &opts.overrides)?;
     let mut tally = verify::suite::tally::RunTally::default();
     for case in &cases {
         if names.is_some_and(|n| !n.iter().any(|x| x == case.name())) {
@@ -153,10 +158,10 @@ pub(crate) fn run_suite(
 
 pub(crate) fn report(out: &Path) -> anyhow::Result<i32> {
     let record = runner::read_record(out)?;
-    let overrides = record.overrides()?;
     let cases = cases::all();
     for case in &cases {
         if out.join(case.name()).exists() {
+            let overrides = record.overrides(case.name())?;
             runner::analyse_case(case.as_ref(), record.fidelity, out, &overrides)?;
         }
     }

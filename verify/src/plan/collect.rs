@@ -38,7 +38,8 @@ pub fn collect(dir: &Path) -> anyhow::Result<Collected> {
             ..
         } => {
             let overrides = super::write::suite_options(dir, *fidelity, set, false)?.overrides;
-            runner::write_record(dir, *fidelity, &overrides)?;
+            let names: Vec<&str> = cases.iter().map(String::as_str).collect();
+            runner::write_record(dir, *fidelity, &names, &overrides)?;
             let all = cases::all();
             for case in all.iter().filter(|c| cases.iter().any(|n| n == c.name())) {
                 std::fs::create_dir_all(dir.join(case.name()))?;

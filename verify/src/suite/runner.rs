@@ -11,6 +11,7 @@ use crate::output::run_info::RunInfo;
 use crate::run::{resume_observed, run_scene_observed, Observer, RunError, RunOptions};
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
@@ -59,22 +60,22 @@ impl std::fmt::Display for Interrupted {
 
 impl std::error::Error for Interrupted {}
 
-/// What `verify report` needs to know about the last suite run in a folder.
+/// What `verify report` needs to know about the suite runs in a folder.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct SuiteRecord {
     /// The fidelity the runs were made at.
     pub fidelity: Fidelity,
-    /// The scene keys set in every run (`--set KEY=VALUE`, as given; empty for the cases as
-    /// written; absent in records written before they were kept).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub set: Vec<String>,
+    /// Per case, the scene keys its runs were last made with (`--set KEY=VALUE`, as given); a
+    /// case absent ran as written. Absent in records written before the keys were kept.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub set: BTreeMap<String, Vec<String>>,
 }
 
 impl SuiteRecord {
-    /// The record's `--set` overrides, parsed.
-    pub fn overrides(&self) -> anyhow::Result<Vec<super::overrides::SceneOverride>> {
-        self.set
-            .iter()
+    /// The `--set` overrides `case`'s runs were last made with, parsed (none: as written).
+    pub fn overrides(&self, case: &str) -> anyhow::Result<Vec<super::overrides::SceneOverride>> {
+        let keys = self.set.get(case).map_or(&[][..], Vec::as_slice);
+        keys.iter()
             .map(|s| s.parse().map_err(|e: String| anyhow::anyhow!(e)))
             .collect()
     }
@@ -229,15 +230,31 @@ pub fn saved_metrics(out: &Path, cases: &[Box<dyn Case>]) -> anyhow::Result<Vec<
     Ok(all)
 }
 
-/// Writes the record `verify report` reads.
+/// Records in `out` that `cases` were run at `fidelity` with `overrides` (`--set`). The other
+/// cases keep what the record said of them if it was at the same fidelity.
 pub fn write_record(
     out: &Path,
     fidelity: Fidelity,
+    cases: &[&str],
     overrides: &[super::overrides::SceneOverride],
 ) -> anyhow::Result<()> {
     std::fs::create_dir_all(out)?;
-    let set = overrides.iter().map(ToString::to_string).collect();
-    let json = serde_json::to_string_pretty(&SuiteRecord { fidelity, set })?;
+    let mut record = match read_record(out) {
+        Ok(r) if r.fidelity == fidelity => r,
+        _ => SuiteRecord {
+            fidelity,
+            set: BTreeMap::new(),
+        },
+    };
+    let keys: Vec<String> = overrides.iter().map(ToString::to_string).collect();
+    for case in cases {
+        if keys.is_empty() {
+            record.set.remove(*case);
+        } else {
+            record.set.insert(case.to_string(), keys.clone());
+        }
+    }
+    let json = serde_json::to_string_pretty(&record)?;
     crate::output::atomic_write(&out.join("suite.json"), json.as_bytes())?;
     Ok(())
 }

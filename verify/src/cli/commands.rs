@@ -111,7 +111,7 @@ pub(crate) fn run_suite(
     let ran: Vec<&str> = cases
         .iter()
         .map(|c| c.name())
-        .filter(|c| names.is_none_or(|n| n.iter().any(|x| x == c)))
+        .filter(|c| names.map_or(true, |n| n.iter().any(|x| x == c)))
         .collect();
     runner::write_record(&opts.out, opts.fidelity, &ran, &opts.overrides)?;
     let mut tally = verify::suite::tally::RunTally::default();

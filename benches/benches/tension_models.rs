@@ -2,7 +2,9 @@
 //! surface_stress, surface_force}`, a water drop in a host liquid filling a periodic cube of
 //! 27³ = 19,683 particles ([`benches::drop_in_host_toml`]). The potential at its default
 //! setting (h = 1.05 l0), the continuum models at the convergence case's h = 1.3 l0; all with
-//! r_e = 4.2 l0.
+//! r_e = 4.2 l0, and the surface force again with its colour kernel reaching 3.6 l0
+//! (`surface_force@re3.6`: 0.62 times the neighbours; docs/findings.md, the colour kernel's
+//! reach).
 //!
 //! Throughput is in fluid particles (host included), so criterion's elements/s are
 //! particle-steps per second. The three are measured in one session, one after another; run
@@ -18,7 +20,12 @@ use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criteri
 use std::cell::OnceCell;
 
 /// The tension models compared.
-const MODELS: [&str; 3] = ["potential", "surface_stress", "surface_force"];
+const MODELS: [&str; 4] = [
+    "potential",
+    "surface_stress",
+    "surface_force",
+    "surface_force@re3.6",
+];
 
 fn tension_models(c: &mut Criterion) {
     let n_side = 27;

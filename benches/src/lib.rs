@@ -216,14 +216,18 @@ fn perturbed(text: &str, n_side: usize) -> Simulation {
 /// model `model` (`"potential"`, `"surface_stress"` or `"surface_force"`). The potential runs at
 /// the default setting (h = 1.05 l0, r_e = 4.2 l0, each liquid's σ = 0.0728 N/m with the pair's
 /// through Fowkes), the continuum models at the convergence case's h = 1.3 l0 (their colour
-/// kernel reaches r_e = 4.2 l0).
+/// kernel reaches r_e = 4.2 l0, or `R` l0 for a model named `"NAME@reR"`, e.g.
+/// `"surface_force@re3.6"`).
 pub fn drop_in_host_toml(n_side: usize, model: &str) -> String {
     let l0 = EDGE_M / n_side as f64;
     let half = 0.5 * EDGE_M;
-    let h = if model == "potential" {
-        String::new()
-    } else {
-        "h_over_l0 = 1.3\n".into()
+    let (model, re) = model
+        .split_once("@re")
+        .map_or((model, None), |(m, r)| (m, Some(r)));
+    let h = match (model, re) {
+        ("potential", _) => String::new(),
+        (_, None) => "h_over_l0 = 1.3\n".into(),
+        (_, Some(re)) => format!("h_over_l0 = 1.3\nre_over_l0 = {re}\n"),
     };
     format!(
         r#"description = "benchmark: water drop in a host, {n_side}^3 particles, {model}"
@@ -280,4 +284,22 @@ z = [0.0, {edge:?}]
 /// time step taken.
 pub fn drop_in_host(n_side: usize, model: &str) -> Simulation {
     perturbed(&drop_in_host_toml(n_side, model), n_side)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_model_named_with_a_reach_sets_the_colour_kernels() {
+        let scene = |m: &str| Scene::from_toml_str(&drop_in_host_toml(12, m)).unwrap();
+        let (plain, narrow) = (scene("surface_force"), scene("surface_force@re3.6"));
+        assert_eq!(plain.discretisation.re_over_l0, 4.2); // the default
+        assert_eq!(narrow.discretisation.re_over_l0, 3.6);
+        assert_eq!(narrow.discretisation.h_over_l0, 1.3);
+        assert_eq!(
+            narrow.effects.interfacial_tension,
+            plain.effects.interfacial_tension
+        );
+    }
 }

@@ -74,7 +74,20 @@ pub fn doublet_runs<'r>(
             continue;
         }
         let s12 = run.info.scene.interfaces[0].tension;
-        let cloud = run.last.cloud(l0_m);
+        let surface_force =
+            run.info.scene.effects.interfacial_tension == solver::scene::TensionModel::SurfaceForce;
+        let mut cloud = run.last.cloud(l0_m);
+        if surface_force {
+            // the host is the gas: the drops' surfaces against it are their free surfaces
+            let own: Vec<bool> = run
+                .info
+                .scene
+                .liquids
+                .iter()
+                .map(|l| l.name == liquids.0 || l.name == liquids.1)
+                .collect();
+            cloud.retain_phases(|p| own[p as usize]);
+        }
         let classes = surface::classify(&cloud);
         let g_final = separation.g1g2_r0.last().copied().unwrap_or(f64::NAN);
         let lens = neumann::regime(sigma_n_m.0, sigma_n_m.1, s12).map_err(anyhow::Error::msg)?
@@ -93,8 +106,7 @@ pub fn doublet_runs<'r>(
             index,
             sigma12_n_m: s12,
             start: start_of(run),
-            surface_force: run.info.scene.effects.interfacial_tension
-                == solver::scene::TensionModel::SurfaceForce,
+            surface_force,
             l0_m,
             contact_particles,
             regime_seen: regime_seen(&cloud, &classes, g_final, l0_m),

@@ -739,6 +739,15 @@ fn wrap_pi(x: f64) -> f64 {
     }
 }
 
+/// How much a quantity measured at several amplitudes (a liquid's period, its damping) changes
+/// across them: `(max − min)/mean` [%]; NaN for no values.
+pub fn spread_percent(values: &[f64]) -> f64 {
+    let (lo, hi) = (values.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+        (a.min(x), b.max(x))
+    });
+    100.0 * (hi - lo) / (values.iter().sum::<f64>() / values.len() as f64)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1196,5 +1205,13 @@ mod tests {
         let (t, y) = reference_series(4.0, PHI_REF, sigma, 4242);
         let s = estimate_noise_rms(&t, &y);
         assert!((s / sigma - 1.0).abs() < 0.15, "{s} vs {sigma}");
+    }
+
+    #[test]
+    fn spread_is_the_range_over_the_mean() {
+        // 11.0, 11.5, 12.0 ms: range 1.0 over mean 11.5
+        assert!((spread_percent(&[11.5, 11.0, 12.0]) - 100.0 / 11.5).abs() < 1e-12);
+        assert_eq!(spread_percent(&[7.0, 7.0]), 0.0);
+        assert!(spread_percent(&[]).is_nan());
     }
 }

@@ -2,7 +2,7 @@
 //! the drops' Q2 over time, and `table.md` (the drop's period and damping per resolution, and
 //! the caps' angles of each model side by side).
 
-use super::judge::{cap_series, drop_series, host_series};
+use super::judge::{amplitude_sets, cap_series, drop_series, host_series};
 use super::measure::{CapPoint, DropPoint, Measured};
 use super::{HostModel, Series as ErrorSeries};
 use crate::report::plot::{self, Plot, Series, SeriesKind};
@@ -17,6 +17,7 @@ pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
     error_against_spacing(&all, dir)?;
     drop_histories(
         &m.drops,
+        by_resolution,
         "Free drop, l = 2: Q2 from 1 ms, per resolution",
         "t / Rayleigh period",
         &dir.join("drop_q2"),
@@ -26,6 +27,7 @@ pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
         let (first, rest) = h.label.split_at(1);
         drop_histories(
             drops,
+            by_resolution,
             &format!(
                 "{}{rest} in its host, l = 2: Q2 from 1 ms, per resolution",
                 first.to_uppercase()
@@ -34,6 +36,22 @@ pub fn plots(m: &Measured, dir: &Path) -> anyhow::Result<()> {
             &dir.join(format!("{}_drop_q2", h.id)),
         )?;
         table.push_str(&host_drop_table(h, drops));
+    }
+    for (h, others) in &m.amplitude_drops {
+        for set in amplitude_sets(m, h, others) {
+            let r = set[0].r_over_l0;
+            drop_histories(
+                set.iter().copied(),
+                |d| format!("ε = {:.2}", d.amplitude),
+                &format!(
+                    "{}: Q2 from 1 ms, per initial stretch ε, R/l0 = {r:.0}",
+                    h.label
+                ),
+                "t / Lamb period in the host",
+                &dir.join(format!("{}_drop_r{r:.0}_eps_q2", h.id)),
+            )?;
+            table.push_str(&amplitude_table(h, &set));
+        }
     }
     table.push_str(&cap_table(&m.caps));
     std::fs::write(dir.join("table.md"), table)?;
@@ -94,21 +112,23 @@ fn error_against_spacing(all: &[ErrorSeries], dir: &Path) -> anyhow::Result<()> 
     )
 }
 
-/// Q2 over its value at 1 ms against t over the reference period, per resolution, into `file`.
-fn drop_histories(
-    drops: &[DropPoint],
+/// Q2 over its value at 1 ms against t over the reference period, one line per drop (named
+/// by `label`), into `file`.
+fn drop_histories<'a, 'r: 'a>(
+    drops: impl IntoIterator<Item = &'a DropPoint<'r>>,
+    label: impl Fn(&DropPoint) -> String,
     title: &str,
     x_label: &str,
     file: &Path,
 ) -> anyhow::Result<()> {
     let series = drops
-        .iter()
+        .into_iter()
         .enumerate()
         .map(|(k, d)| {
             let (t, q) = &d.series;
             let q0 = q.first().copied().unwrap_or(1.0);
             Series {
-                label: format!("R/l0 = {:.0}", d.r_over_l0),
+                label: label(d),
                 points: t
                     .iter()
                     .zip(q)
@@ -131,6 +151,43 @@ fn drop_histories(
         },
         file,
     )
+}
+
+/// A line's label: its drop's resolution.
+fn by_resolution(d: &DropPoint) -> String {
+    format!("R/l0 = {:.0}", d.r_over_l0)
+}
+
+/// A model's drop at one resolution across initial stretches: per ε the fitted period against
+/// the reference, the decay rate against the reference's with ν + ν_AV, Q2's offset.
+fn amplitude_table(h: &HostModel, set: &[&DropPoint]) -> String {
+    let mut s = format!(
+        "\n## The {} drop across initial stretches ε, R/l0 = {:.0}\n\n\
+         A liquid's period and damping do not depend on the amplitude; an elastic–plastic body's do. \
+         References as above.\n\n\
+         | ε | drop particles | period [ms] | reference [ms] | error | decay rate [1/s] | / reference(ν + ν_AV) | Q2 offset | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
+        h.name,
+        set.first().map_or(f64::NAN, |d| d.r_over_l0)
+    );
+    for d in set {
+        let ([p, g, b], _) = fitted(d);
+        let t = d.reference_period_s;
+        let _ = writeln!(
+            s,
+            "| {:.2} | {} | {:.2} | {:.2} | {:+.1} % | {:.1} | {:.1} | {:+.4} | {:.0} |",
+            d.amplitude,
+            d.drop_particles,
+            p * 1e3,
+            t * 1e3,
+            100.0 * (p / t - 1.0),
+            g,
+            g / d.decay_with_av_per_s,
+            b,
+            d.run.info.wall_time_s
+        );
+    }
+    s
 }
 
 /// A drop's fits: the period [s], decay rate [1/s] and offset [-] of Q2's, the period [s] and

@@ -2,7 +2,8 @@
 //! metric's observed order with the check that its error falls as `l0` is refined.
 
 use super::measure::{CapPoint, Declared, DropPoint, Measured};
-use super::Series;
+use super::{HostModel, Series, EPSILON};
+use crate::measure::oscillation::spread_percent;
 use crate::suite::{Metric, Tolerance};
 
 /// A small-amplitude period within 3 % of the drop's reference (Rayleigh's, or the viscous
@@ -98,6 +99,12 @@ pub fn metrics(case: &str, m: &Measured) -> Vec<Metric> {
     for (_, drops) in &m.host_drops {
         out.extend(drops.iter().flat_map(|d| drop_metrics(case, d)));
     }
+    for (h, drops) in &m.amplitude_drops {
+        out.extend(drops.iter().flat_map(|d| drop_metrics(case, d)));
+        for set in amplitude_sets(m, h, drops) {
+            out.extend(amplitude_spread(case, &set));
+        }
+    }
     let series = drop_series(&m.drops, "drop", m.declared.drops)
         .into_iter()
         .chain(cap_series(&m.caps, &m.declared))
@@ -114,6 +121,89 @@ pub fn host_series(m: &Measured) -> Vec<Series> {
         .iter()
         .flat_map(|(h, drops)| drop_series(drops, h.label, m.declared.host_drops))
         .collect()
+}
+
+/// A model's drops at the other stretches, one set per `R/l0` (coarsest first), each with the
+/// model's drop at the case's stretch and that `R/l0`, smallest stretch first.
+pub fn amplitude_sets<'a, 'r>(
+    m: &'a Measured<'r>,
+    h: &HostModel,
+    others: &'a [DropPoint<'r>],
+) -> Vec<Vec<&'a DropPoint<'r>>> {
+    let mut resolutions: Vec<f64> = others.iter().map(|d| d.r_over_l0).collect();
+    resolutions.dedup();
+    let base = (m.host_drops.iter())
+        .filter(|(model, _)| model == h)
+        .flat_map(|(_, drops)| drops.iter());
+    resolutions
+        .into_iter()
+        .map(|r| {
+            let mut set: Vec<&DropPoint> = (others.iter().chain(base.clone()))
+                .filter(|d| d.r_over_l0 == r)
+                .collect();
+            set.sort_by(|a, b| a.amplitude.total_cmp(&b.amplitude));
+            set
+        })
+        .collect()
+}
+
+/// How much a model's period and damping change across the stretches at one `R/l0`,
+/// (max − min)/mean [%]: a liquid's do not change; an elastic–plastic body's do (a small
+/// stretch stays elastic, a large one yields). Judged once every stretch has a fit.
+fn amplitude_spread(case: &str, set: &[&DropPoint]) -> Vec<Metric> {
+    let Some(first) = set.first() else {
+        return Vec::new();
+    };
+    let label = first.host_model.map_or("drop", |h| h.label);
+    let fits: Vec<(f64, f64)> = set
+        .iter()
+        .filter_map(|d| d.fit.as_ref().ok())
+        .map(|f| (f.period_s, f.damping_rate_per_s))
+        .collect();
+    let amplitudes: Vec<String> = set.iter().map(|d| format!("{:.2}", d.amplitude)).collect();
+    let r = first.r_over_l0;
+    let name = |what: &str| format!("{label} {what} spread over ε R/l0={r:.0}");
+    if set.len() < 2 || fits.len() < set.len() {
+        return vec![
+            Metric::new(case, name("period"), "%", f64::NAN).note(format!(
+                "{} of {} stretches (ε = {}) fitted: no spread",
+                fits.len(),
+                set.len(),
+                amplitudes.join(", ")
+            )),
+        ];
+    }
+    let note = format!(
+        "(max − min)/mean of the fits over ε = {}; a liquid's is 0",
+        amplitudes.join(", ")
+    );
+    vec![
+        Metric::new(
+            case,
+            name("period"),
+            "%",
+            spread_percent(&fits.iter().map(|f| f.0).collect::<Vec<_>>()),
+        )
+        .against(
+            0.0,
+            Tolerance::absolute(
+                100.0 * PERIOD_TARGET,
+                "3 %: the liquid model's target for the period's spread over ε = 0.05…0.2",
+            ),
+        )
+        .note(note.clone()),
+        Metric::new(
+            case,
+            name("damping"),
+            "%",
+            spread_percent(&fits.iter().map(|f| f.1).collect::<Vec<_>>()),
+        )
+        .against(
+            0.0,
+            Tolerance::absolute(100.0 * DAMPING_TARGET, "30 %: as the damping"),
+        )
+        .note(note),
+    ]
 }
 
 /// The fitted period [s] and decay rate [1/s] of a drop, and the fit's note.
@@ -136,6 +226,12 @@ fn fit_values(d: &DropPoint) -> (f64, f64, String) {
 /// layer), and its decay rate against the reference's with ν + ν_AV.
 fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
     let r = d.r_over_l0;
+    // `R/l0=10`, and the stretch where it is not the case's (`R/l0=10 ε=0.20`)
+    let at = if d.amplitude == EPSILON {
+        format!("R/l0={r:.0}")
+    } else {
+        format!("R/l0={r:.0} ε={:.2}", d.amplitude)
+    };
     let status = d.run.status_note();
     let (period, gamma, fit_note) = fit_values(d);
     let t_ms = d.reference_period_s * 1e3;
@@ -157,26 +253,21 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
             "Lamb's 5ν/R²",
         ),
     };
-    let period = Metric::new(
-        case,
-        format!("{prefix} period R/l0={r:.0}"),
-        "ms",
-        period * 1e3,
-    )
-    .against(
-        t_ms,
-        Tolerance::relative(
-            PERIOD_TARGET,
+    let period = Metric::new(case, format!("{prefix} period {at}"), "ms", period * 1e3)
+        .against(
             t_ms,
-            "3 %: the liquid model's target for a small-amplitude period",
-        ),
-    )
-    .run(d.run)
-    .note(format!(
-        "{status}{fit_note}; {reference}; error {:+.1} %",
-        100.0 * (period * 1e3 / t_ms - 1.0)
-    ));
-    let damping = Metric::new(case, format!("{prefix} damping R/l0={r:.0}"), "1/s", gamma)
+            Tolerance::relative(
+                PERIOD_TARGET,
+                t_ms,
+                "3 %: the liquid model's target for a small-amplitude period",
+            ),
+        )
+        .run(d.run)
+        .note(format!(
+            "{status}{fit_note}; {reference}; error {:+.1} %",
+            100.0 * (period * 1e3 / t_ms - 1.0)
+        ));
+    let damping = Metric::new(case, format!("{prefix} damping {at}"), "1/s", gamma)
         .run(d.run)
         .against(
             d.decay_with_av_per_s,
@@ -196,7 +287,7 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
         out.push(
             Metric::new(
                 case,
-                format!("{prefix} static stiffness R/l0={r:.0}"),
+                format!("{prefix} static stiffness {at}"),
                 "-",
                 d.static_stiffness,
             )
@@ -209,7 +300,7 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
         out.push(
             Metric::new(
                 case,
-                format!("{prefix} momentum drift R/l0={r:.0}"),
+                format!("{prefix} momentum drift {at}"),
                 "-",
                 d.momentum_drift,
             )

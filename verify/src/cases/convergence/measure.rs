@@ -2,7 +2,7 @@
 //! each with its resolution. References use the liquid of the run's own scene, so a `--set`
 //! that changes a property is judged against the right analytic value.
 
-use super::{HostModel, FIT_FROM_S, HOST_MODELS, Q2, RADIUS_M};
+use super::{HostModel, EPSILON, FIT_FROM_S, HOST_MODELS, Q2, RADIUS_M};
 use crate::analytic::viscous_host::{self, Liquid};
 use crate::analytic::{elastic_drop, lamb, young_laplace};
 use crate::cases::scene::artificial_viscosity_m2_s;
@@ -26,6 +26,8 @@ pub struct DropPoint<'r> {
     pub r_over_l0: f64,
     /// The continuum model of a drop in a host (none: the potential's free drop).
     pub host_model: Option<HostModel>,
+    /// The initial stretch `ε` of the spheroid along z [-].
+    pub amplitude: f64,
     /// The drop's particles (without the surface-stress drop's host).
     pub drop_particles: usize,
     /// The l = 2 period for the drop's volume (its particles × l0³) [s]: Rayleigh's for the
@@ -92,8 +94,11 @@ pub struct CapPoint<'r> {
 pub struct Measured<'r> {
     /// Free drops (the pairwise potential), coarsest first.
     pub drops: Vec<DropPoint<'r>>,
-    /// Drops under each continuum model that ran, in their host, coarsest first.
+    /// Drops under each continuum model that ran, in their host, coarsest first (at the
+    /// case's stretch [`EPSILON`]).
     pub host_drops: Vec<(HostModel, Vec<DropPoint<'r>>)>,
+    /// Drops under each continuum model at the other stretches, smallest first.
+    pub amplitude_drops: Vec<(HostModel, Vec<DropPoint<'r>>)>,
     /// Caps, the potential's then each continuum model's, by angle then coarsest first.
     pub caps: Vec<CapPoint<'r>>,
     /// The resolutions the fidelity declares: of the free drop, of each continuum model's
@@ -135,22 +140,30 @@ fn host_model(run: &RunData) -> Option<HostModel> {
 /// host).
 pub fn measure(runs: &[RunData], f: Fidelity) -> Measured<'_> {
     let d = super::design(f);
-    let drops = |model: Option<HostModel>| -> Vec<DropPoint> {
+    // the case's stretch (`at_epsilon`) or the others
+    let drops = |model: Option<HostModel>, at_epsilon: bool| -> Vec<DropPoint> {
         let mut v: Vec<DropPoint> = runs
             .iter()
             .filter(|r| r.info.scene.walls.is_empty() && host_model(r) == model)
             .map(drop_point)
+            .filter(|d| (d.amplitude == EPSILON) == at_epsilon)
             .collect();
-        v.sort_by(|a, b| a.r_over_l0.total_cmp(&b.r_over_l0));
+        v.sort_by(|a, b| {
+            (a.r_over_l0.total_cmp(&b.r_over_l0)).then(a.amplitude.total_cmp(&b.amplitude))
+        });
         v
     };
-    let mut m = Measured {
-        drops: drops(None),
-        host_drops: HOST_MODELS
+    let by_model = |at_epsilon: bool| -> Vec<(HostModel, Vec<DropPoint>)> {
+        HOST_MODELS
             .into_iter()
-            .map(|h| (h, drops(Some(h))))
+            .map(|h| (h, drops(Some(h), at_epsilon)))
             .filter(|(_, d)| !d.is_empty())
-            .collect(),
+            .collect()
+    };
+    let mut m = Measured {
+        drops: drops(None, true),
+        host_drops: by_model(true),
+        amplitude_drops: by_model(false),
         caps: runs
             .iter()
             .filter(|r| !r.info.scene.walls.is_empty())
@@ -274,6 +287,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         run,
         r_over_l0: RADIUS_M / l0,
         host_model,
+        amplitude: amplitude(scene),
         drop_particles: n_drop,
         reference_period_s,
         inviscid_period_s,
@@ -285,6 +299,17 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
         momentum_drift: momentum / (mass_kg * speed_m_s),
+    }
+}
+
+/// The stretch `ε` of a drop scene's spheroid (its first body; semi-axis `R(1 + ε)` along z),
+/// rounded to 1e-9 so that a scene's [`EPSILON`] compares equal [-]; NaN for another shape.
+fn amplitude(scene: &solver::Scene) -> f64 {
+    match scene.bodies.first().map(|b| &b.shape) {
+        Some(solver::scene::BodyShape::Ellipsoid { semi_axes, .. }) => {
+            ((semi_axes[2] / RADIUS_M - 1.0) * 1e9).round() / 1e9
+        }
+        _ => f64::NAN,
     }
 }
 

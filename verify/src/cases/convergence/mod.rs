@@ -82,6 +82,9 @@ const CAP_START: BodyShape = BodyShape::Hemisphere {
 };
 /// Initial stretch of the free drop along z [-].
 const EPSILON: f64 = 0.1;
+/// The other stretches of the amplitude runs [-]: with [`EPSILON`] the drop_oscillation case's
+/// ε = 0.05, 0.1, 0.2, over which a liquid's period does not change.
+const OTHER_AMPLITUDES: [f64; 2] = [0.05, 0.2];
 /// The fit of the free drop starts after the release transient [s].
 const FIT_FROM_S: f64 = 1e-3;
 /// Radius of the caps' plate [m]: the 30° cap of the hemisphere's volume has a wetted radius of
@@ -315,6 +318,12 @@ struct Design {
     css_drops: Vec<f64>,
     /// The continuum models whose drops run (of [`HOST_MODELS`]).
     drop_models: &'static [HostModel],
+    /// The continuum models whose drop also runs at the other amplitudes.
+    amplitude_models: &'static [HostModel],
+    /// Those amplitudes `ε` [-].
+    amplitudes: &'static [f64],
+    /// The `R/l0` of those runs (of `css_drops`).
+    amplitude_drops: Vec<f64>,
     /// The continuum models whose caps run at every resolution of `css_caps` (of
     /// [`CAP_ORDER`]).
     cap_models: &'static [HostModel],
@@ -335,6 +344,11 @@ fn design(f: Fidelity) -> Design {
             // neighbour lists 6 times as often as the surface force's (its particles move
             // more) and took 196 of the smoke case's 510 s of one thread
             drop_models: &HOST_MODELS[..2],
+            // one, the largest: that the amplitude runs are measured and judged (3 s of one
+            // thread at R/l0 = 5)
+            amplitude_models: &HOST_MODELS[1..2],
+            amplitudes: &OTHER_AMPLITUDES[1..],
+            amplitude_drops: vec![5.0],
             // not the shifted difference form's nor the wide kernel's: the first's caps follow
             // the difference form's (the 120° cap at R/l0 = 8: 120.1° against 121.1°), the
             // second is the wall normal's at another h/l0, and each pair of smoke caps costs CI
@@ -352,6 +366,13 @@ fn design(f: Fidelity) -> Design {
             drops: vec![10.0, 10.0 * SQRT_2, 20.0],
             css_drops: vec![10.0, 10.0 * SQRT_2, 20.0],
             drop_models: &HOST_MODELS,
+            // the surface force's: the candidate's drop (the wall normal's is the same model
+            // without walls)
+            amplitude_models: &HOST_MODELS[1..2],
+            amplitudes: &OTHER_AMPLITUDES,
+            // the two coarsest: whether the spread falls with resolution (a 20 at R/l0 = 20
+            // would cost about an hour of two threads per stretch)
+            amplitude_drops: vec![10.0, 10.0 * SQRT_2],
             cap_models: &CAP_MODELS,
             baseline_cap_models: &BASELINE_CAP_MODELS,
             caps: vec![8.0, 11.0, 16.0],
@@ -362,6 +383,13 @@ fn design(f: Fidelity) -> Design {
             drops: vec![10.0, 10.0 * SQRT_2, 20.0, 20.0 * SQRT_2],
             css_drops: vec![10.0, 10.0 * SQRT_2, 20.0],
             drop_models: &HOST_MODELS,
+            // the surface force's: the candidate's drop (the wall normal's is the same model
+            // without walls)
+            amplitude_models: &HOST_MODELS[1..2],
+            amplitudes: &OTHER_AMPLITUDES,
+            // the two coarsest: whether the spread falls with resolution (a 20 at R/l0 = 20
+            // would cost about an hour of two threads per stretch)
+            amplitude_drops: vec![10.0, 10.0 * SQRT_2],
             cap_models: &CAP_MODELS,
             baseline_cap_models: &BASELINE_CAP_MODELS,
             caps: vec![8.0, 11.0, 16.0, 22.0],
@@ -423,9 +451,14 @@ fn drop_id(r_over_l0: f64) -> String {
     format!("drop_r{r_over_l0:.0}")
 }
 
-/// Run id of the continuum model `m`'s drop at `R/l0`.
-fn css_drop_id(m: &HostModel, r_over_l0: f64) -> String {
-    format!("{}_drop_r{r_over_l0:.0}", m.id)
+/// Run id of the continuum model `m`'s drop at `R/l0`, with its stretch where it is not
+/// [`EPSILON`] (`_eps20` for ε = 0.2).
+fn css_drop_id(m: &HostModel, r_over_l0: f64, eps: f64) -> String {
+    if eps == EPSILON {
+        format!("{}_drop_r{r_over_l0:.0}", m.id)
+    } else {
+        format!("{}_drop_r{r_over_l0:.0}_eps{:.0}", m.id, 100.0 * eps)
+    }
 }
 
 /// Run id of the cap at `theta_deg` with `n` spacings per radius.
@@ -463,12 +496,9 @@ fn drop_scene(f: Fidelity, r_over_l0: f64) -> solver::Scene {
 /// The drop of [`drop_scene`] under the continuum model `m`, in a host liquid filling a
 /// periodic cube of side [`HOST_BOX_OVER_R`] R (a whole number of spacings), for
 /// [`FIT_FROM_S`] and two of Lamb's periods in the host.
-fn css_drop_scene(f: Fidelity, m: &HostModel, r_over_l0: f64) -> solver::Scene {
+fn css_drop_scene(f: Fidelity, m: &HostModel, r_over_l0: f64, eps: f64) -> solver::Scene {
     let l0 = RADIUS_M / r_over_l0;
-    let (a, c) = (
-        RADIUS_M / (1.0 + EPSILON).sqrt(),
-        RADIUS_M * (1.0 + EPSILON),
-    );
+    let (a, c) = (RADIUS_M / (1.0 + eps).sqrt(), RADIUS_M * (1.0 + eps));
     let half = (0.5 * HOST_BOX_OVER_R * r_over_l0).round() * l0;
     // smoke: enough for the fit's two extrema at a period 20 % beyond Lamb's
     let periods = match f {
@@ -603,8 +633,19 @@ impl Case for Convergence {
             Fidelity::Paper => "one finer point of each beyond standard",
         };
         format!(
-            "free water drop at R/l0 = {:?} (ε = {EPSILON}), matte caps at {:?}° with {:?} spacings per radius under the potential and {:?} under the surface force; {why}.",
-            d.drops, d.angles_deg, d.caps, d.css_caps
+            "free water drop at R/l0 = {:?} (ε = {EPSILON}{}), matte caps at {:?}° with {:?} spacings per radius under the potential and {:?} under the surface force; {why}.",
+            d.drops,
+            if d.amplitude_models.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    "; the surface force's also at ε = {:?} at R/l0 = {:?}",
+                    d.amplitudes, d.amplitude_drops
+                )
+            },
+            d.angles_deg,
+            d.caps,
+            d.css_caps
         )
     }
     fn runs(&self, f: Fidelity) -> Vec<RunSpec> {
@@ -639,12 +680,26 @@ impl Case for Convergence {
             });
         let css_drops = d.drop_models.iter().flat_map(|m| {
             d.css_drops.iter().map(move |&r| RunSpec {
-                id: css_drop_id(m, r),
-                scene: css_drop_scene(f, m, r),
+                id: css_drop_id(m, r, EPSILON),
+                scene: css_drop_scene(f, m, r, EPSILON),
                 snapshot_times_s: vec![],
             })
         });
-        drops.chain(caps).chain(css_drops).chain(csf_caps).collect()
+        let amplitude_drops = d.amplitude_models.iter().flat_map(|m| {
+            (d.amplitude_drops.iter()).flat_map(move |&r| {
+                d.amplitudes.iter().map(move |&eps| RunSpec {
+                    id: css_drop_id(m, r, eps),
+                    scene: css_drop_scene(f, m, r, eps),
+                    snapshot_times_s: vec![],
+                })
+            })
+        });
+        drops
+            .chain(caps)
+            .chain(css_drops)
+            .chain(amplitude_drops)
+            .chain(csf_caps)
+            .collect()
     }
     fn probe(&self, sim: &Simulation) -> Vec<(&'static str, f64)> {
         // the drop's particles: phase 0 (the surface-stress drop's host is phase 1)
@@ -744,6 +799,7 @@ mod tests {
                         + d.baseline_cap_models.len() * (d.css_caps.len() - 1))
                         * d.angles_deg.len()
                     + d.drop_models.len() * d.css_drops.len()
+                    + d.amplitude_models.len() * d.amplitudes.len() * d.amplitude_drops.len()
             );
             for r in &runs {
                 let walls = !r.scene.walls.is_empty();

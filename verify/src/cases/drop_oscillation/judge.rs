@@ -5,6 +5,7 @@ use super::measure::DropRun;
 use crate::analytic::lamb;
 use crate::cases::scene::{artificial_viscosity_m2_s, MATTE};
 use crate::diagnostics::lattice_moduli::lattice_elasticity;
+use crate::measure::oscillation::spread_percent;
 use crate::suite::{Metric, Tolerance};
 
 /// The liquid model's target for the period of a small-amplitude oscillation: a liquid's period
@@ -108,14 +109,6 @@ fn spread(case: &str, runs: &[DropRun]) -> Vec<Metric> {
     if fitted.len() < 2 || fitted.len() < runs.len() {
         return Vec::new();
     }
-    let spread_pct = |v: Vec<f64>| {
-        let (lo, hi) = v
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                (a.min(x), b.max(x))
-            });
-        100.0 * (hi - lo) / (v.iter().sum::<f64>() / v.len() as f64)
-    };
     let amplitudes: Vec<String> = runs.iter().map(|m| format!("{:.2}", m.amplitude)).collect();
     let note = format!(
         "(max − min)/mean over ε = {}; a liquid's is 0",
@@ -126,7 +119,7 @@ fn spread(case: &str, runs: &[DropRun]) -> Vec<Metric> {
             case,
             "period spread over amplitudes",
             "%",
-            spread_pct(fitted.iter().map(|f| f.0).collect()),
+            spread_percent(&fitted.iter().map(|f| f.0).collect::<Vec<_>>()),
         )
         .against(
             0.0,
@@ -137,7 +130,7 @@ fn spread(case: &str, runs: &[DropRun]) -> Vec<Metric> {
             case,
             "damping spread over amplitudes",
             "%",
-            spread_pct(fitted.iter().map(|f| f.1).collect()),
+            spread_percent(&fitted.iter().map(|f| f.1).collect::<Vec<_>>()),
         )
         .against(
             0.0,

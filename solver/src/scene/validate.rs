@@ -713,8 +713,9 @@ fn tension_inputs(s: &Scene) -> R {
 /// across interfaces between liquid phases, so a scene needs at least two liquids in its
 /// bodies (a liquid's free surface against empty space carries no tension: the surrounding gas
 /// is declared as a liquid). The surface force splits the tensions among at most three phases:
-/// three liquids, or two and the one solid its walls are made of. Contact angles on walls are
-/// not built for the surface stress.
+/// three liquids, or, with the shares' walls, two and the one solid its walls are made of (the
+/// wall normal's walls are no phase: three liquids on them). Contact angles on walls are not
+/// built for the surface stress.
 fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
     let name = match model {
         TensionModel::SurfaceForce => "surface_force",
@@ -765,12 +766,14 @@ fn continuum_inputs(s: &Scene, model: TensionModel, liquids_used: usize) -> R {
             ),
         ));
     }
-    if liquids_used > 2 {
+    if liquids_used > 2 && s.effects.surface_force_walls == SurfaceForceWalls::Shares {
         return Err(SceneError::invalid(
             "effects.interfacial_tension",
             format!("\"{name}\" with {liquids_used} liquids and walls"),
-            "the surface force splits the tensions among at most three phases, and the walls' \
-             solid is one of them: use at most two liquids with walls, or the potential (true)",
+            "the surface force splits the tensions among at most three phases, and the shares' \
+             walls make their solid one of them: use at most two liquids with walls, \
+             effects.surface_force_walls = \"normal\" (whose walls are no phase) for three, or \
+             the potential (true)",
         ));
     }
     Ok(())

@@ -254,6 +254,9 @@ shape = { kind = "sphere", center = [0.0, 0.0, 9.0e-4], radius = 2.0e-4 }
 "#;
     let e = error_of(&cap(60.0, third));
     assert!(e.contains("3 liquids and walls"), "{e}");
+    // with the wall normal's walls, which are no phase of the split, three liquids are fine
+    let scene = solver::Scene::from_toml_str(&normal(&cap(60.0, third))).expect("a valid scene");
+    solver::Simulation::new(&scene).expect("three liquids on the wall normal's walls");
     // the gas has no surface tension: an angle of its would take no part
     let e = error_of(&cap(60.0, "").replace("{ a = 60.0 }", "{ a = 60.0, g = 90.0 }"));
     assert!(

@@ -146,9 +146,8 @@ impl ForceScratch {
         let band = self.band_gradient_times_r_e / inp.kernel.support_m();
         for (sides, s) in interface_terms(n_liquids, &sigma, wall) {
             interface_gradient(inp, sides, &self.spills, &mut self.gradient);
-            // the walls' contact angle for this term, if they turn its normals
-            let turn = normal_walls
-                .and_then(|w| contact_cosine(sides, &sigma, w.solid, s).map(|c| (c, w.l0_m)));
+            // the walls' contact angles for this term, if they turn its normals
+            let turn = normal_walls.map(|w| (Turn::of(sides, &sigma, w.solid, s), w.l0_m));
             // the wall's side of the colour's jump, as of the pressure's
             if turn.is_some() {
                 wall_normal::complete_with_wall_colour(
@@ -159,6 +158,7 @@ impl ForceScratch {
                 );
             }
             let geometry = &self.wall_geometry;
+            let sigma = &sigma;
             // the normal in the band
             self.normal
                 .par_iter_mut()
@@ -167,8 +167,15 @@ impl ForceScratch {
                 .for_each(|(i, (nrm, g))| {
                     let m = g.norm();
                     *nrm = if m > band { *g / m } else { Vec3::zeros() };
-                    if let (Some((cos_theta, l0_m)), true) = (turn, m > band) {
-                        let (nw, dist_m) = geometry[i];
+                    let Some((turn, l0_m)) = turn.filter(|_| m > band) else {
+                        return;
+                    };
+                    let (nw, dist_m) = geometry[i];
+                    // no wall near, or beyond the blend: unchanged (`turned`'s own test)
+                    if nw == Vec3::zeros() || ((dist_m - l0_m) / blend_m).clamp(0.0, 1.0) == 1.0 {
+                        return;
+                    }
+                    if let Some(cos_theta) = turn.cosine_at(inp, i, sigma) {
                         *nrm = wall_normal::turned(*nrm, nw, dist_m, cos_theta, l0_m, blend_m);
                     }
                 });
@@ -208,7 +215,8 @@ impl ForceScratch {
 /// (tension `s` [N/m]) meets the walls of solid `solid`: Young's
 /// `cos θ = (σ_BS − σ_AS)/σ_AB`, clipped to [−1, 1] (`sigma(a, solid)` holds each liquid's
 /// tension against the solid up to the solid's own, which cancels). `None` for a liquid
-/// against all the others (the three-liquid split, which has no walls).
+/// against all the others (the three-liquid split: its angle is a pair's, particle by
+/// particle, [`Turn`]).
 pub fn contact_cosine(
     sides: Sides,
     sigma: &impl Fn(usize, usize) -> f64,
@@ -221,6 +229,67 @@ pub fn contact_cosine(
             Some(((sigma(b, solid) - sigma(a, solid)) / s).clamp(-1.0, 1.0))
         }
         Sides::Phase(_) => None,
+    }
+}
+
+/// The contact angle at which the wall normal turns a term's normals: one angle for a pair of
+/// liquids; for a liquid `k` against the other two (the three-liquid split), the angle of the
+/// pair its interface is between at each particle — a particle of another liquid `l` is on
+/// `k | l`, a particle of `k` on the mean of its pairs weighted by the other liquids' colour
+/// around it, `Σ_l c_l cos θ_kl / Σ_l c_l`, `c_l = Σ_j∈l V_j W_c(r_ij)` — so that the shares of
+/// `k` and `l`, turned alike, meet the wall as the pair's tension `σ_kl = σ_k + σ_l` would
+/// (docs/model.md §4b).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Turn {
+    /// The cosine of the pair's angle, measured in side A.
+    Pair(f64),
+    /// The liquid `k` of the split, and the walls' solid's phase.
+    Split { k: u8, solid: usize },
+}
+
+impl Turn {
+    fn of(sides: Sides, sigma: &impl Fn(usize, usize) -> f64, solid: usize, s: f64) -> Turn {
+        match sides {
+            Sides::Pair(..) => Turn::Pair(
+                contact_cosine(sides, sigma, solid, s).expect("a pair has a contact angle"),
+            ),
+            Sides::Phase(k) => Turn::Split { k, solid },
+        }
+    }
+
+    /// The cosine [-] at fluid particle `i`, measured in side A; `None` where no liquid it
+    /// meets is near (`i` of `k` with no other liquid's particle within the colour kernel's
+    /// support, or one that meets `k` nowhere: `σ_kl = 0`).
+    fn cosine_at<K: Kernel>(
+        self,
+        inp: &StressInput<K>,
+        i: usize,
+        sigma: &impl Fn(usize, usize) -> f64,
+    ) -> Option<f64> {
+        let (k, solid) = match self {
+            Turn::Pair(c) => return Some(c),
+            Turn::Split { k, solid } => (k, solid),
+        };
+        let pair = |l: u8| {
+            let s = sigma(k as usize, l as usize);
+            contact_cosine(Sides::Pair(k, l), sigma, solid, s).filter(|_| s != 0.0)
+        };
+        let own = inp.phase[i];
+        if own != k {
+            return pair(own);
+        }
+        let (n, cut) = (inp.n_fluid, inp.kernel.support_m());
+        let (mut sum, mut weight) = (0.0, 0.0);
+        for j in inp.lists.all(i).filter(|&j| j < n && inp.phase[j] != k) {
+            let r = inp.lists.delta(inp.pos[i], inp.pos[j]).norm();
+            let Some(cos) = pair(inp.phase[j]).filter(|_| r < cut) else {
+                continue;
+            };
+            let c = inp.vol[j] * inp.kernel.w(r);
+            sum += c * cos;
+            weight += c;
+        }
+        (weight > 0.0).then(|| sum / weight)
     }
 }
 

@@ -18,8 +18,10 @@ pub fn plots(measured: &Measured, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
     for s in &measured.singles {
         side_view_of(s.run, l0_m, dir)?;
     }
-    let (identical, matte_slag): (Vec<&PlateRun>, Vec<&PlateRun>) =
-        runs.iter().partition(|m| m.run.id.starts_with("identical"));
+    // the paper's maps and sweep: the potential's runs
+    let (identical, matte_slag): (Vec<&PlateRun>, Vec<&PlateRun>) = (runs.iter())
+        .filter(|m| !m.surface_force)
+        .partition(|m| m.run.id.starts_with("identical"));
     map("fig3a", (0.4, 0.4), &identical, dir)?;
     map("fig3b", (0.4, 0.2), &matte_slag, dir)?;
     theta12_at_theta31_90(&identical, dir)?;
@@ -30,6 +32,7 @@ pub fn plots(measured: &Measured, l0_m: f64, dir: &Path) -> anyhow::Result<()> {
 /// drops measured; the diagonal is agreement.
 fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> {
     let mut typed = Vec::new();
+    let mut surface_force = Vec::new();
     let mut from_measured = Vec::new();
     for m in &measured.binaries {
         let theta = measured_theta12(m);
@@ -40,7 +43,15 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
         if let Ok(eq23::SolidContact::TripleLine { theta12_deg }) =
             eq23::solid_contact(s1, s2, SIGMA12, m.theta31_deg, m.theta23_deg)
         {
-            typed.push((theta12_deg, theta));
+            let model = if m.surface_force {
+                &mut surface_force
+            } else {
+                &mut typed
+            };
+            model.push((theta12_deg, theta));
+        }
+        if m.surface_force {
+            continue; // the single drops are the potential's
         }
         let ingredients = (
             measured.ingredient(s1, m.theta31_deg),
@@ -75,6 +86,12 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
                     points: from_measured,
                     kind: SeriesKind::Markers,
                     color: 2,
+                },
+                Series {
+                    label: "surface force (wall normal): Eq. 23 at the typed Young angles".into(),
+                    points: surface_force,
+                    kind: SeriesKind::Markers,
+                    color: 3,
                 },
             ],
             x_range: Some((0.0, 180.0)),

@@ -109,6 +109,9 @@ impl Judge<'_> {
         measured: f64,
         typed_theta12: f64,
     ) -> Option<Metric> {
+        if b.surface_force {
+            return None; // the single drops are the potential's
+        }
         let (s1, s2) = b.sigma_n_m;
         let t31 = m.ingredient(s1, b.theta31_deg)?;
         let t23 = m.ingredient(s2, b.theta23_deg)?;

@@ -17,6 +17,8 @@ pub struct PlateRun<'r> {
     pub theta31_deg: f64,
     /// Young angle θ23 of liquid 2 on the plate, as typed [deg].
     pub theta23_deg: f64,
+    /// Under the continuum surface force, in a gas (else the paper's potential).
+    pub surface_force: bool,
     /// Wetted shares of the plate and the drop's height.
     pub contact: WallContact,
     /// What touches the plate, in the words of [`Prediction::words`].
@@ -96,7 +98,11 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
     let theta31_deg = sc.solids[0].contact_angles[&sc.liquids[0].name];
     let theta23_deg = sc.solids[0].contact_angles[&sc.liquids[1].name];
     let prediction = Prediction::of(sigma_n_m, theta31_deg, theta23_deg)?;
-    let cloud = run.last.cloud(l0_m);
+    let surface_force = sc.effects.interfacial_tension == solver::scene::TensionModel::SurfaceForce;
+    let mut cloud = run.last.cloud(l0_m);
+    if surface_force {
+        cloud.retain_phases(|p| p < 2); // the gas, the third liquid, is left out
+    }
     let classes = surface::classify(&cloud);
     let contact = geometry::wall_contact(&cloud, 0.0);
     Ok(PlateRun {
@@ -104,6 +110,7 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
         sigma_n_m,
         theta31_deg,
         theta23_deg,
+        surface_force,
         seen: seen_words(&contact.wetted_fraction),
         theta12_deg: prediction
             .line_to_measure()

@@ -6,7 +6,9 @@
 //! and its angle θ12 (inside liquid 1); if `|cos θ12| > 1` one liquid spreads under the other.
 //! Measured on the state at t = 32 ms (the paper's Fig. 18 instant): which liquids touch the
 //! plate, and θ12 where a line exists. The analytic θ12 maps of Fig. 3(a)/(b) are drawn with the
-//! simulated points on them.
+//! simulated points on them. Beside the paper's potential, Eq. 23's points away from 90° run
+//! under the candidate continuum model (the surface force with the wall normal's walls, in a
+//! gas; `csfn_` runs), judged on the same metrics against the typed angles.
 
 mod draw;
 mod judge;
@@ -15,12 +17,13 @@ mod measure;
 pub(super) use judge::triple_line_tolerance;
 
 use super::analysis::{self, Analysis};
-use super::scene::{LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};
+use super::scene::{laplace_sound_speed, LiquidProps, SceneBuilder, GRAVITY_M_S2, MATTE, SLAG};
 use crate::analytic::eq23::{self, SolidContact};
 use crate::suite::{
     smoke_is_coarse, Case, Check, DeclaredEffects, Fidelity, Metric, RunData, RunSpec,
 };
-use solver::scene::{BodyShape, Cut, WallBoundary, WallShape};
+use solver::kernel::KernelKind;
+use solver::scene::{BodyShape, Cut, SurfaceForceWalls, TensionModel, WallBoundary, WallShape};
 use std::path::Path;
 
 /// The case.
@@ -52,24 +55,36 @@ impl Point {
     }
 }
 
+/// The prefix of the runs under the candidate continuum model (the surface force with the wall
+/// normal's walls, docs/model.md §4b) and of their metrics' run ids.
+pub const SURFACE_FORCE_PREFIX: &str = "csfn_";
+
+/// Identical liquids (matte under two names) at Young angles θ31, θ23 [deg].
+fn identical(theta31_deg: f64, theta23_deg: f64) -> Point {
+    Point {
+        system: "identical",
+        a: MATTE.named("matte1"),
+        b: MATTE.named("matte2"),
+        theta31_deg,
+        theta23_deg,
+    }
+}
+
+/// Matte (liquid 1) and slag (liquid 2) at Young angles θ31, θ23 [deg].
+fn matte_slag(theta31_deg: f64, theta23_deg: f64) -> Point {
+    Point {
+        system: "matte_slag",
+        a: MATTE,
+        b: SLAG,
+        theta31_deg,
+        theta23_deg,
+    }
+}
+
 /// The binary drops of the two systems of §4, identical liquids and matte/slag: the paper's
 /// θ31 = 90° sweeps (lines at 90°, or one liquid spreading under the other), and points where
 /// Eq. 23 gives a line with θ12 well away from 90° (|θ12 − 90°| ≥ 28°, both sides).
 fn points(f: Fidelity) -> Vec<Point> {
-    let identical = |t31, t23| Point {
-        system: "identical",
-        a: MATTE.named("matte1"),
-        b: MATTE.named("matte2"),
-        theta31_deg: t31,
-        theta23_deg: t23,
-    };
-    let matte_slag = |t31, t23| Point {
-        system: "matte_slag",
-        a: MATTE,
-        b: SLAG,
-        theta31_deg: t31,
-        theta23_deg: t23,
-    };
     if f == Fidelity::Smoke {
         return vec![identical(90.0, 90.0)];
     }
@@ -77,8 +92,15 @@ fn points(f: Fidelity) -> Vec<Point> {
         .map(|t| identical(90.0, t))
         .into();
     v.extend([60.0, 90.0, 120.0].map(|t| matte_slag(90.0, t)));
-    // Eq. 23's θ12: 134.0°, 46.0°, 117.6°, 59.9° (identical); 121.2°, 58.8°, 135.6°, 54.1°
-    v.extend([
+    v.extend(off_right_angle_points());
+    v
+}
+
+/// The eight points where Eq. 23 gives a line with θ12 well away from 90° (Eq. 23's θ12:
+/// 134.0°, 46.0°, 117.6°, 59.9° for identical liquids; 121.2°, 58.8°, 135.6°, 54.1° for
+/// matte/slag).
+fn off_right_angle_points() -> [Point; 8] {
+    [
         identical(90.0, 80.0),
         identical(90.0, 100.0),
         identical(60.0, 52.0),
@@ -87,8 +109,17 @@ fn points(f: Fidelity) -> Vec<Point> {
         matte_slag(90.0, 105.0),
         matte_slag(120.0, 130.0),
         matte_slag(60.0, 45.0),
-    ]);
-    v
+    ]
+}
+
+/// The binary drops run under the surface force beside the paper's potential: the smoke
+/// fidelity's one point (that the runs are measured), from standard fidelity on the eight
+/// points away from 90°.
+fn surface_force_points(f: Fidelity) -> Vec<Point> {
+    match f {
+        Fidelity::Smoke => points(f),
+        _ => off_right_angle_points().into(),
+    }
 }
 
 /// The single drops that measure the ingredients of Eq. 23 in the same setting: each liquid
@@ -190,6 +221,104 @@ fn scene(f: Fidelity, p: &Point) -> solver::Scene {
     )
 }
 
+/// The liquids' viscosity under the surface force [Pa·s]: as the convergence case's caps, so
+/// that the drop settles within the run (Ohnesorge number 0.5 for matte at R = 1 mm, where the
+/// liquids' own viscosities leave it ringing for the viscous time `ρR²/μ` ≈ 1.4 s); the angles
+/// Eq. 23 relates are static, and the viscosity does not enter them.
+const SURFACE_FORCE_VISCOSITY_PA_S: f64 = 0.7;
+
+/// The gas around the drop under the surface force: matte's density at a tenth of the liquids'
+/// viscosity, without a surface tension (the gas of Young's relation, as the convergence
+/// case's caps).
+const SURFACE_FORCE_GAS: LiquidProps = LiquidProps {
+    name: "gas",
+    viscosity_pa_s: 0.1 * SURFACE_FORCE_VISCOSITY_PA_S,
+    ..MATTE
+};
+
+/// Half the side of the surface force's periodic box [m]: the flattest binary drop
+/// (matte/slag at θ31 = 60°, θ23 = 45°) spreads to a wetted radius of about 1.8 mm.
+const SURFACE_FORCE_HALF_BOX_M: f64 = 2.75e-3;
+
+/// The binary drop of [`scene`] under the surface force with the wall normal's walls
+/// (docs/model.md §4b), in a gas filling a box periodic along x, y and z above the plate (the
+/// gas at the top meets the plate's underside), in zero gravity, its liquids at
+/// [`SURFACE_FORCE_VISCOSITY_PA_S`]; the continuum models' kernel (h = 1.3 l0, r_e = 4.2 l0),
+/// the plate `2 r_e/l0` layers thick, and a sound speed for which the drop's Laplace pressure
+/// compresses it by 1 %, as the convergence case's caps. Eq. 23's angles are local: gravity
+/// (Bond number 0.09 for matte) is left out, as the gas's weight would otherwise float the
+/// lighter slag.
+fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
+    let l0 = l0(f);
+    let viscous = |l: LiquidProps| LiquidProps {
+        viscosity_pa_s: SURFACE_FORCE_VISCOSITY_PA_S,
+        ..l
+    };
+    let (a, b, gas) = (viscous(p.a), viscous(p.b), SURFACE_FORCE_GAS);
+    let half = (SURFACE_FORCE_HALF_BOX_M / l0).round() * l0;
+    let top = (2.5 * R_M / l0).round() * l0;
+    let re_over_l0 = solver::scene::Setting::Natsui2021.re_over_l0();
+    let builder = SceneBuilder::new(l0, laplace_sound_speed(&a, R_M))
+        .time(surface_force_end_s(f), 2.0e-4)
+        .kernel(KernelKind::WendlandC2, SURFACE_FORCE_H_OVER_L0, re_over_l0)
+        .paper_effects()
+        .tension_model(TensionModel::SurfaceForce)
+        .surface_force_walls(SurfaceForceWalls::Normal)
+        .liquid(&a)
+        .liquid(&b)
+        .gas(&gas)
+        .interface(a.name, b.name, SIGMA12)
+        .interface(a.name, gas.name, a.surface_tension_n_m)
+        .interface(b.name, gas.name, b.surface_tension_n_m)
+        .solid("plate", &[(a.name, p.theta31_deg), (b.name, p.theta23_deg)])
+        .cut_body(
+            "drop",
+            drop_shape(),
+            Cut {
+                point: [0.0; 3],
+                normal: [1.0, 0.0, 0.0],
+                liquids: [a.name.into(), b.name.into()],
+            },
+        )
+        .body(
+            "gas",
+            gas.name,
+            BodyShape::Surrounding {
+                min: [-half, -half, 0.0],
+                max: [half, half, top],
+            },
+        )
+        .wall(
+            "plate",
+            "plate",
+            WallShape::Plate {
+                min: [-half, -half],
+                max: [half, half],
+                top: 0.0,
+            },
+            WallBoundary::FreeSlip,
+        )
+        .wall_layers((2.0 * re_over_l0).ceil() as u32);
+    let s = builder.scene();
+    let below = s.wall_layers(&s.walls[0]) as f64 * l0;
+    builder
+        .periodic_box([-half, -half, -below], [half, half, top])
+        .build()
+}
+
+/// `h/l0` of the continuum models (the convergence case's).
+const SURFACE_FORCE_H_OVER_L0: f64 = 1.3;
+
+/// The end of the runs under the surface force [s]: the convergence case's caps', in which a
+/// cap of these liquids' viscosity and gas settles; at smoke fidelity 6 ms, that the run is
+/// measured (its 17,000 particles with the plate cost CI about 40 s of one thread).
+fn surface_force_end_s(f: Fidelity) -> f64 {
+    match f {
+        Fidelity::Smoke => 0.006,
+        _ => 0.04,
+    }
+}
+
 /// One liquid's drop (the binary drop's volume) on the plate at Young angle `theta_deg`.
 fn single_scene(f: Fidelity, liquid: &LiquidProps, theta_deg: f64) -> solver::Scene {
     plate(
@@ -255,7 +384,8 @@ impl Case for PlateEq23 {
         "Natsui et al. 2021 §4, Eq. 23, Fig. 3(a)/(b), Figs. 16–19"
     }
     fn effects(&self) -> Option<DeclaredEffects> {
-        Some(DeclaredEffects::ON_A_PLATE)
+        // the potential's drops under gravity, the surface force's in zero gravity
+        None
     }
     fn accepted_findings(&self, f: Fidelity) -> Vec<(Check, String)> {
         let mut out = smoke_is_coarse(f);
@@ -275,7 +405,10 @@ impl Case for PlateEq23 {
             Fidelity::Smoke => "R/l0 = 5, 12 ms, θ23 = 90° only",
             Fidelity::Standard => {
                 "R/l0 = 8: the 1–2 interface spans 16 spacings; 32 ms as the paper's Fig. 18; \
-                 each liquid alone at each Young angle a line uses, for Eq. 23's ingredients"
+                 each liquid alone at each Young angle a line uses, for Eq. 23's ingredients; \
+                 and Eq. 23's eight points away from 90° under the surface force with the wall \
+                 normal, in a gas (38,720 fluid and 17,424 wall particles, h = 1.3 l0, zero \
+                 gravity, the liquids at 0.7 Pa·s, 40 ms)"
             }
             Fidelity::Paper => "the paper's l0 = 0.06 mm, dt = 1e-6 s",
         };
@@ -295,7 +428,12 @@ impl Case for PlateEq23 {
             scene: single_scene(f, &l, th),
             snapshot_times_s: vec![],
         });
-        binaries.chain(singles).collect()
+        let surface_force = surface_force_points(f).into_iter().map(|p| RunSpec {
+            id: format!("{SURFACE_FORCE_PREFIX}{}", p.id()),
+            scene: surface_force_scene(f, &p),
+            snapshot_times_s: vec![],
+        });
+        binaries.chain(singles).chain(surface_force).collect()
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
         analysis::analyse(self, f, runs, dir)

@@ -8,7 +8,8 @@
 //! plate, and θ12 where a line exists. The analytic θ12 maps of Fig. 3(a)/(b) are drawn with the
 //! simulated points on them. Beside the paper's potential, Eq. 23's points away from 90° run
 //! under the candidate continuum model (the surface force with the wall normal's walls, in a
-//! gas; `csfn_` runs), judged on the same metrics against the typed angles.
+//! gas, zero gravity, 40 ms; `csfn_` runs), judged on the same metrics against the typed
+//! angles.
 
 mod draw;
 mod judge;
@@ -57,7 +58,7 @@ impl Point {
 
 /// The prefix of the runs under the candidate continuum model (the surface force with the wall
 /// normal's walls, docs/model.md §4b) and of their metrics' run ids.
-pub const SURFACE_FORCE_PREFIX: &str = "csfn_";
+const SURFACE_FORCE_PREFIX: &str = "csfn_";
 
 /// Identical liquids (matte under two names) at Young angles θ31, θ23 [deg].
 fn identical(theta31_deg: f64, theta23_deg: f64) -> Point {
@@ -246,7 +247,7 @@ const SURFACE_FORCE_HALF_BOX_M: f64 = 2.75e-3;
 /// [`SURFACE_FORCE_VISCOSITY_PA_S`]; the continuum models' kernel (h = 1.3 l0, r_e = 4.2 l0),
 /// the plate `2 r_e/l0` layers thick, and a sound speed for which the drop's Laplace pressure
 /// compresses it by 1 %, as the convergence case's caps. Eq. 23's angles are local: gravity
-/// (Bond number 0.09 for matte) is left out, as the gas's weight would otherwise float the
+/// (Bond number ρgR²/σ = 0.11 for matte) is left out, as the gas's weight would otherwise float the
 /// lighter slag.
 fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
     let l0 = l0(f);

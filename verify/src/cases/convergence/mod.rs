@@ -578,29 +578,8 @@ fn csf_cap_scene(f: Fidelity, m: &HostModel, theta_deg: f64, n: f64) -> solver::
         .interface(MATTE.name, CAP_HOST.name, MATTE.surface_tension_n_m)
         .solid("plate", &[(MATTE.name, theta_deg)])
         .body("drop", MATTE.name, CAP_START)
-        .body(
-            "host",
-            CAP_HOST.name,
-            BodyShape::Surrounding {
-                min: [-half, -half, 0.0],
-                max: [half, half, top],
-            },
-        )
-        .wall(
-            "plate",
-            "plate",
-            WallShape::Plate {
-                min: [-half, -half],
-                max: [half, half],
-                top: 0.0,
-            },
-            WallBoundary::FreeSlip,
-        )
-        .wall_layers(cap_plate_layers());
-    let s = b.scene();
-    let below = s.wall_layers(&s.walls[0]) as f64 * l0;
-    b.periodic_box([-half, -half, -below], [half, half, top])
-        .build()
+        .gas_over_plate(CAP_HOST.name, half, top, cap_plate_layers());
+    b.build()
 }
 
 impl Case for Convergence {

@@ -259,7 +259,7 @@ fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
     let half = (SURFACE_FORCE_HALF_BOX_M / l0).round() * l0;
     let top = (2.5 * R_M / l0).round() * l0;
     let re_over_l0 = solver::scene::Setting::Natsui2021.re_over_l0();
-    let builder = SceneBuilder::new(l0, laplace_sound_speed(&a, R_M))
+    SceneBuilder::new(l0, laplace_sound_speed(&a, R_M))
         .time(surface_force_end_s(f), 2.0e-4)
         .kernel(KernelKind::WendlandC2, SURFACE_FORCE_H_OVER_L0, re_over_l0)
         .paper_effects()
@@ -281,29 +281,7 @@ fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
                 liquids: [a.name.into(), b.name.into()],
             },
         )
-        .body(
-            "gas",
-            gas.name,
-            BodyShape::Surrounding {
-                min: [-half, -half, 0.0],
-                max: [half, half, top],
-            },
-        )
-        .wall(
-            "plate",
-            "plate",
-            WallShape::Plate {
-                min: [-half, -half],
-                max: [half, half],
-                top: 0.0,
-            },
-            WallBoundary::FreeSlip,
-        )
-        .wall_layers((2.0 * re_over_l0).ceil() as u32);
-    let s = builder.scene();
-    let below = s.wall_layers(&s.walls[0]) as f64 * l0;
-    builder
-        .periodic_box([-half, -half, -below], [half, half, top])
+        .gas_over_plate(gas.name, half, top, (2.0 * re_over_l0).ceil() as u32)
         .build()
 }
 

@@ -332,6 +332,38 @@ impl SceneBuilder {
         wall.layers = Some(layers);
         self
     }
+
+    /// The continuum models' setting of a drop on a plate: the liquid `gas` (a body of that
+    /// name) filling a box periodic along x, y and z, `2 half_m` square and `top_m` high above
+    /// a free-slip plate named "plate", of solid "plate", whose top face is z = 0 and which
+    /// spans the box in `layers` layers, so that the gas at the box's top meets the plate's
+    /// underside [m].
+    pub fn gas_over_plate(self, gas: &str, half_m: f64, top_m: f64, layers: u32) -> Self {
+        let (half, top) = (half_m, top_m);
+        let b = self
+            .body(
+                gas,
+                gas,
+                BodyShape::Surrounding {
+                    min: [-half, -half, 0.0],
+                    max: [half, half, top],
+                },
+            )
+            .wall(
+                "plate",
+                "plate",
+                WallShape::Plate {
+                    min: [-half, -half],
+                    max: [half, half],
+                    top: 0.0,
+                },
+                WallBoundary::FreeSlip,
+            )
+            .wall_layers(layers);
+        let s = b.scene();
+        let below = s.wall_layers(&s.walls[0]) as f64 * s.discretisation.l0;
+        b.periodic_box([-half, -half, -below], [half, half, top])
+    }
 }
 
 #[cfg(test)]

@@ -202,6 +202,15 @@ fn drop_shape() -> BodyShape {
     }
 }
 
+/// The drop's cut into its halves across x = 0: liquid `a` at x < 0, `b` beyond.
+fn halves(a: &str, b: &str) -> Cut {
+    Cut {
+        point: [0.0; 3],
+        normal: [1.0, 0.0, 0.0],
+        liquids: [a.into(), b.into()],
+    }
+}
+
 fn scene(f: Fidelity, p: &Point) -> solver::Scene {
     let (a, b) = (p.a, p.b);
     plate(
@@ -210,15 +219,7 @@ fn scene(f: Fidelity, p: &Point) -> solver::Scene {
             .liquid(&b)
             .interface(a.name, b.name, SIGMA12)
             .solid("plate", &[(a.name, p.theta31_deg), (b.name, p.theta23_deg)])
-            .cut_body(
-                "drop",
-                drop_shape(),
-                Cut {
-                    point: [0.0; 3],
-                    normal: [1.0, 0.0, 0.0],
-                    liquids: [a.name.into(), b.name.into()],
-                },
-            ),
+            .cut_body("drop", drop_shape(), halves(a.name, b.name)),
     )
 }
 
@@ -272,15 +273,7 @@ fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
         .interface(a.name, gas.name, a.surface_tension_n_m)
         .interface(b.name, gas.name, b.surface_tension_n_m)
         .solid("plate", &[(a.name, p.theta31_deg), (b.name, p.theta23_deg)])
-        .cut_body(
-            "drop",
-            drop_shape(),
-            Cut {
-                point: [0.0; 3],
-                normal: [1.0, 0.0, 0.0],
-                liquids: [a.name.into(), b.name.into()],
-            },
-        )
+        .cut_body("drop", drop_shape(), halves(a.name, b.name))
         .gas_over_plate(gas.name, half, top, (2.0 * re_over_l0).ceil() as u32)
         .build()
 }

@@ -95,6 +95,16 @@ impl Judge<'_> {
             .run(b.run)
             .note("top of the drop above the plate at the end"),
         );
+        out.push(
+            Metric::new(
+                self.case,
+                format!("drift {}", b.run.id),
+                "mm/s",
+                b.drift_m_s * 1e3,
+            )
+            .run(b.run)
+            .note("speed of the drop's centre of mass along the plate, mean over the last quarter of the run: Eq. 23 describes a drop at rest, and on a free-slip plate a drop that moves was set moving by forces that do not conserve momentum (docs/findings.md)"),
+        );
         Ok(out)
     }
 

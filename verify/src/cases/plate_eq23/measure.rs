@@ -3,8 +3,10 @@
 //! its contact angle (an ingredient of Eq. 23).
 
 use super::Prediction;
+use crate::cases::substrate::tail_stats;
 use crate::measure::geometry::{self, WallContact};
 use crate::measure::surface;
+use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
 use crate::suite::RunData;
 
 /// One run, measured on its final state.
@@ -26,6 +28,9 @@ pub struct PlateRun<'r> {
     /// θ12 inside liquid 1 at the line [deg], where Eq. 23 has a line off its boundary, or why
     /// it could not be measured.
     pub theta12_deg: Option<Result<f64, String>>,
+    /// The drop's speed along the plate over the run's last quarter [m/s]: its two liquids'
+    /// centre of mass, whose velocity the time series holds per liquid ([`drift_m_s`]).
+    pub drift_m_s: f64,
 }
 
 /// A single liquid's drop on the plate, measured on its final state.
@@ -116,7 +121,40 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
             .line_to_measure()
             .map(|_| geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0)),
         contact,
+        drift_m_s: drift_m_s(run),
     })
+}
+
+/// The speed along the plate [m/s] of the centre of mass of a run's first two liquids (the
+/// drop; a third is its gas), from their centroid velocities averaged over the last quarter of
+/// the run (velocities, not positions: a drop that crosses the periodic box's side keeps its
+/// velocity). A drop at rest, as Eq. 23 describes it, has none; on a free-slip plate only the
+/// forces' failure to conserve momentum can start one moving (docs/findings.md).
+pub fn drift_m_s(run: &RunData) -> f64 {
+    let ts = &run.timeseries;
+    let t = ts.run_column(RunColumn::Time);
+    let from = t.last().map_or(f64::NAN, |end| 0.75 * end);
+    let liquids: Vec<&str> = (run.info.scene.liquids.iter().take(2))
+        .map(|l| l.name.as_str())
+        .collect();
+    let along = |axis: Axis| {
+        let mut momentum = vec![0.0; t.len()];
+        let mut mass = vec![0.0; t.len()];
+        for l in &liquids {
+            let m = ts.liquid_column(l, LiquidColumn::Mass);
+            let v = ts.liquid_column(l, LiquidColumn::CentroidVelocity(axis));
+            if m.len() != t.len() || v.len() != t.len() {
+                return f64::NAN; // a record without the columns
+            }
+            for k in 0..t.len() {
+                momentum[k] += m[k] * v[k];
+                mass[k] += m[k];
+            }
+        }
+        let v: Vec<f64> = momentum.iter().zip(&mass).map(|(p, m)| p / m).collect();
+        tail_stats(&t, &v, from).0
+    };
+    along(Axis::X).hypot(along(Axis::Y))
 }
 
 /// What touches the plate: a liquid with under 10 % of the plate's first particle layer does

@@ -144,10 +144,12 @@ impl ForceScratch {
         self.energy.clear();
         self.energy.resize(n_all, 0.0);
         let band = self.band_gradient_times_r_e / inp.kernel.support_m();
+        let level = normal_walls.and_then(|w| split_wall_level(n_liquids, &sigma, w.solid));
         for (sides, s) in interface_terms(n_liquids, &sigma, wall) {
             interface_gradient(inp, sides, &self.spills, &mut self.gradient);
             // the walls' contact angles for this term, if they turn its normals
-            let turn = normal_walls.map(|w| (Turn::of(sides, &sigma, w.solid, s), w.l0_m));
+            let turn = normal_walls
+                .and_then(|w| turn_cosine(sides, &sigma, w.solid, s, level).map(|c| (c, w.l0_m)));
             // the wall's side of the colour's jump, as of the pressure's
             if turn.is_some() {
                 wall_normal::complete_with_wall_colour(
@@ -158,7 +160,6 @@ impl ForceScratch {
                 );
             }
             let geometry = &self.wall_geometry;
-            let sigma = &sigma;
             // the normal in the band
             self.normal
                 .par_iter_mut()
@@ -167,17 +168,11 @@ impl ForceScratch {
                 .for_each(|(i, (nrm, g))| {
                     let m = g.norm();
                     *nrm = if m > band { *g / m } else { Vec3::zeros() };
-                    let Some((turn, l0_m)) = turn.filter(|_| m > band) else {
+                    let Some((cos_theta, l0_m)) = turn.filter(|_| m > band) else {
                         return;
                     };
                     let (nw, dist_m) = geometry[i];
-                    // no wall near, or beyond the blend: unchanged (`turned`'s own test)
-                    if nw == Vec3::zeros() || ((dist_m - l0_m) / blend_m).clamp(0.0, 1.0) == 1.0 {
-                        return;
-                    }
-                    if let Some(cos_theta) = turn.cosine_at(inp, i, sigma) {
-                        *nrm = wall_normal::turned(*nrm, nw, dist_m, cos_theta, l0_m, blend_m);
-                    }
+                    *nrm = wall_normal::turned(*nrm, nw, dist_m, cos_theta, l0_m, blend_m);
                 });
             curvature_sums(inp, &self.normal, &self.spills, &mut self.sums);
             // the walls' share of the energy (their side of the liquid's faces on them)
@@ -232,65 +227,58 @@ pub fn contact_cosine(
     }
 }
 
-/// The contact angle at which the wall normal turns a term's normals: one angle for a pair of
-/// liquids; for a liquid `k` against the other two (the three-liquid split), the angle of the
-/// pair its interface is between at each particle — a particle of another liquid `l` is on
-/// `k | l`, a particle of `k` on the mean of its pairs weighted by the other liquids' colour
-/// around it, `Σ_l c_l cos θ_kl / Σ_l c_l`, `c_l = Σ_j∈l V_j W_c(r_ij)` — so that the shares of
-/// `k` and `l`, turned alike, meet the wall as the pair's tension `σ_kl = σ_k + σ_l` would
-/// (docs/model.md §4b).
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Turn {
-    /// The cosine of the pair's angle, measured in side A.
-    Pair(f64),
-    /// The liquid `k` of the split, and the walls' solid's phase.
-    Split { k: u8, solid: usize },
+/// The cosine [-], measured in side A, of the angle at which the wall normal turns the
+/// normals of the interface term `sides` (tension `s` [N/m]) at the walls of solid `solid`:
+/// a pair's Young angle ([`contact_cosine`]); for a liquid `k` against the other two (the
+/// three-liquid split, share `σ_k = s`), one angle along its whole interface,
+/// `σ_k cos φ_k = C − σ_kS`, from the split's common level `C` ([`split_wall_level`]).
+/// Where two liquids `k | l` meet the wall their shares' pushes then add to
+/// `(C − σ_kS) − (C − σ_lS) = σ_lS − σ_kS = σ_kl cos θ_kl`, Young's (Eq. 23 for two liquids),
+/// and since each share's push is the same all along its closed boundary on the wall, the
+/// pushes leave no net force along it, whatever the drop's shape (docs/model.md §4b). Clipped
+/// to [−1, 1]; `None` for a liquid of the split without a level.
+fn turn_cosine(
+    sides: Sides,
+    sigma: &impl Fn(usize, usize) -> f64,
+    solid: usize,
+    s: f64,
+    level: Option<f64>,
+) -> Option<f64> {
+    match sides {
+        Sides::Pair(..) => contact_cosine(sides, sigma, solid, s),
+        Sides::Phase(k) => level.map(|c| ((c - sigma(k as usize, solid)) / s).clamp(-1.0, 1.0)),
+    }
 }
 
-impl Turn {
-    fn of(sides: Sides, sigma: &impl Fn(usize, usize) -> f64, solid: usize, s: f64) -> Turn {
-        match sides {
-            Sides::Pair(..) => Turn::Pair(
-                contact_cosine(sides, sigma, solid, s).expect("a pair has a contact angle"),
-            ),
-            Sides::Phase(k) => Turn::Split { k, solid },
-        }
+/// The common level `C` [N/m] of the three-liquid split at walls under the wall normal
+/// ([`turn_cosine`]), given the pair tensions `sigma(a, b)` and each liquid's tension against
+/// the solid `sigma(a, solid)` up to the solid's own: any `C` gives each pair Young's push, and
+/// a share `σ_k` can turn its normals only as far as `|C − σ_kS| ≤ |σ_k|`. Those intervals
+/// meet wherever every pair has a Young angle (`|σ_kS − σ_lS| ≤ σ_kl = σ_k + σ_l`, and
+/// intervals on a line that meet pairwise meet all together); `C` is the middle of their
+/// common part, which keeps the shares' angles as far from 0° and 180° as it can (a liquid
+/// with no share, `σ_k = 0`, fixes `C = σ_kS`). `None` unless the liquids with tensions are
+/// three.
+pub fn split_wall_level(
+    n_liquids: usize,
+    sigma: &impl Fn(usize, usize) -> f64,
+    solid: usize,
+) -> Option<f64> {
+    let liquids: Vec<usize> = (0..n_liquids)
+        .filter(|&a| (0..n_liquids).any(|b| b != a && sigma(a, b) != 0.0))
+        .collect();
+    if liquids.len() != 3 {
+        return None;
     }
-
-    /// The cosine [-] at fluid particle `i`, measured in side A; `None` where no liquid it
-    /// meets is near (`i` of `k` with no other liquid's particle within the colour kernel's
-    /// support, or one that meets `k` nowhere: `σ_kl = 0`).
-    fn cosine_at<K: Kernel>(
-        self,
-        inp: &StressInput<K>,
-        i: usize,
-        sigma: &impl Fn(usize, usize) -> f64,
-    ) -> Option<f64> {
-        let (k, solid) = match self {
-            Turn::Pair(c) => return Some(c),
-            Turn::Split { k, solid } => (k, solid),
-        };
-        let pair = |l: u8| {
-            let s = sigma(k as usize, l as usize);
-            contact_cosine(Sides::Pair(k, l), sigma, solid, s).filter(|_| s != 0.0)
-        };
-        let own = inp.phase[i];
-        if own != k {
-            return pair(own);
-        }
-        let (n, cut) = (inp.n_fluid, inp.kernel.support_m());
-        let (mut sum, mut weight) = (0.0, 0.0);
-        for j in inp.lists.all(i).filter(|&j| j < n && inp.phase[j] != k) {
-            let r = inp.lists.delta(inp.pos[i], inp.pos[j]).norm();
-            let Some(cos) = pair(inp.phase[j]).filter(|_| r < cut) else {
-                continue;
-            };
-            let c = inp.vol[j] * inp.kernel.w(r);
-            sum += c * cos;
-            weight += c;
-        }
-        (weight > 0.0).then(|| sum / weight)
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for (i, &k) in liquids.iter().enumerate() {
+        let (l, m) = (liquids[(i + 1) % 3], liquids[(i + 2) % 3]);
+        let share = 0.5 * (sigma(k, l) + sigma(k, m) - sigma(l, m));
+        let s_ks = sigma(k, solid);
+        lo = lo.max(s_ks - share.abs());
+        hi = hi.min(s_ks + share.abs());
     }
+    Some(0.5 * (lo + hi))
 }
 
 /// The two sides of an interface term: a pair of liquids `a | b`, or one liquid against all

@@ -610,7 +610,7 @@ fn the_split_s_wall_level_gives_every_pair_young_s_push_within_the_shares_reach(
     // Eq. 23's binary drops in a gas (liquids 0, 1, gas 2, solid 3) over the angles plate_eq23
     // runs, and a share at zero (σ01 + σ02 = σ12): every share's cosine within [−1, 1]
     // unclipped, and each pair's shares adding to Young's `σ_lS − σ_kS` to round-off
-    let cases = [
+    let cases: [(f64, f64, f64, f64, f64); 7] = [
         (0.1, 0.4, 0.4, 90.0, 80.0),
         (0.1, 0.4, 0.2, 90.0, 75.0),
         (0.1, 0.4, 0.2, 90.0, 105.0),

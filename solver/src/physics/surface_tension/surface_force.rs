@@ -37,6 +37,7 @@ use super::surface_stress::StressInput;
 use crate::kernel::Kernel;
 use crate::physics::forces::pairs_once::{each_pair_once, Reactions, Spills};
 use crate::state::Vec3;
+use nalgebra::Matrix3;
 use rayon::prelude::*;
 use wall_normal::WallNormal;
 
@@ -53,6 +54,10 @@ pub struct ForceScratch {
     /// The band's threshold on `|∇c| r_e` [-] ([`BAND_GRADIENT_TIMES_R_E`] by default; the
     /// diagnostics vary it).
     pub band_gradient_times_r_e: f64,
+    /// Whether each term of the three-liquid split is made to conserve linear momentum
+    /// ([`momentum_correction`]; on by default, the tests turn it off to measure what it
+    /// removes).
+    pub split_momentum_correction: bool,
     /// `∇c_b` per particle [1/m] (zero off the phases `a` and `b`; walls: zero unless they
     /// take part).
     gradient: Vec<Vec3>,
@@ -65,6 +70,8 @@ pub struct ForceScratch {
     pub curvature: Vec<f64>,
     /// The force per fluid particle [N].
     pub force: Vec<Vec3>,
+    /// One split term's force per fluid particle [N] (the momentum correction's input).
+    term_force: Vec<Vec3>,
     /// The interfacial energy estimate `Σ_i V_i σ_ab |∇c_b|` [J] of the last evaluation.
     pub interface_energy_j: f64,
     /// Its share per fluid particle [J].
@@ -91,11 +98,13 @@ impl Default for ForceScratch {
     fn default() -> Self {
         ForceScratch {
             band_gradient_times_r_e: BAND_GRADIENT_TIMES_R_E,
+            split_momentum_correction: true,
             gradient: Vec::new(),
             normal: Vec::new(),
             sums: Vec::new(),
             curvature: Vec::new(),
             force: Vec::new(),
+            term_force: Vec::new(),
             interface_energy_j: 0.0,
             energy: Vec::new(),
             wall_geometry: Vec::new(),
@@ -182,7 +191,20 @@ impl ForceScratch {
                 .zip(inp.vol[n..n_all].par_iter())
                 .for_each(|((e, g), v)| *e += v * s * g.norm());
             let (grad, sums) = (&self.gradient, &self.sums);
-            self.force
+            // a term of the three liquids' split collects its own force first, to be corrected
+            let corrected = self.split_momentum_correction
+                && wall.is_none()
+                && matches!(sides, Sides::Phase(_));
+            if corrected {
+                self.term_force.clear();
+                self.term_force.resize(n, Vec3::zeros());
+            }
+            let target = if corrected {
+                &mut self.term_force
+            } else {
+                &mut self.force
+            };
+            target
                 .par_iter_mut()
                 .zip(self.curvature.par_iter_mut())
                 .zip(self.energy[..n].par_iter_mut())
@@ -200,10 +222,81 @@ impl ForceScratch {
                     *k = -num / den; // κ = −∇·n, renormalised in the tangent plane
                     *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
                 });
+            if corrected {
+                let geometry = normal_walls.map(|_| self.wall_geometry.as_slice());
+                momentum_correction(inp, &self.gradient[..n], geometry, &mut self.term_force);
+                self.force
+                    .par_iter_mut()
+                    .zip(self.term_force.par_iter())
+                    .for_each(|(f, t)| *f += t);
+            }
         }
         // a fixed-order sum: the same bits for any thread count
         self.interface_energy_j = self.energy.iter().sum();
     }
+}
+
+/// Below this fraction of the largest eigenvalue of the walls' normal moment
+/// `Σ n_w ⊗ n_w` (over a term's band particles near walls), a direction is one no wall faces
+/// ([`momentum_correction`]): lattice round-off of a plate's normal is ~1e-16 per component,
+/// squared ~1e-32, and a wall tilted by 1e-4 rad (1e-8) still counts as facing it.
+const UNFACED_EIGENVALUE_FRACTION: f64 = 1e-9;
+
+/// Makes one term of the three-liquid split conserve linear momentum (docs/model.md §4b):
+/// subtracts from its force `force` [N] (one per fluid particle) the net `N = Σ_i F_i` as a
+/// uniform traction over the term's interface, `ΔF_i = −P N V_i|g_i| / Σ_j V_j|g_j|`, with
+/// `g` the term's colour gradient [1/m]. Each share's interface is closed, so its continuum
+/// force `σ_k ∮ κ n dA` vanishes whatever its shape; the discrete one does not where the share's
+/// interface folds at a triple line (a 90° fold pulls 1.05 of its line force, a sphere's face
+/// 0.99 of its Laplace force, lattice unit tests), and off Neumann's balance the folds of the
+/// shares do not cancel. `P` projects on the directions that no wall faces: without walls
+/// (`walls = None`, or no band particle near one) every direction; with the wall normal's
+/// geometry `walls` (the wall's unit normal per fluid particle, zero away from walls), those
+/// orthogonal to every wall normal that the term's band particles see — along a plate, the
+/// plate's two directions — since a share turned at one angle along its whole boundary on a
+/// plane pushes that boundary evenly (no net along it) while the wall takes the push across.
+/// The sums run in particle order (the same bits for any thread count).
+fn momentum_correction<K: Kernel>(
+    inp: &StressInput<K>,
+    gradient: &[Vec3],
+    walls: Option<&[(Vec3, f64)]>,
+    force: &mut [Vec3],
+) {
+    let mut net = Vec3::zeros();
+    let mut area = 0.0; // Σ V|g| [m²]
+    let mut faced = Matrix3::zeros();
+    for (i, (f, g)) in force.iter().zip(gradient).enumerate() {
+        if *g == Vec3::zeros() {
+            continue;
+        }
+        net += f;
+        area += inp.vol[i] * g.norm();
+        if let Some(w) = walls {
+            faced += w[i].0 * w[i].0.transpose();
+        }
+    }
+    if area == 0.0 {
+        return;
+    }
+    let eigen = faced.symmetric_eigen();
+    let largest = eigen.eigenvalues.max();
+    let mut free = Matrix3::zeros();
+    for (k, lambda) in eigen.eigenvalues.iter().enumerate() {
+        if *lambda <= UNFACED_EIGENVALUE_FRACTION * largest {
+            let v = eigen.eigenvectors.column(k);
+            free += v * v.transpose();
+        }
+    }
+    let traction = free * net / area; // [N/m²]
+    force
+        .par_iter_mut()
+        .zip(gradient.par_iter())
+        .zip(inp.vol.par_iter())
+        .for_each(|((f, g), v)| {
+            if *g != Vec3::zeros() {
+                *f -= traction * (v * g.norm());
+            }
+        });
 }
 
 /// The cosine of the contact angle, measured in side A, at which the interface term `sides`

@@ -211,3 +211,119 @@ fn three_flat_layers_have_no_curvature_and_no_force() {
         s.interface_energy_j
     );
 }
+
+/// The forces [N] per fluid particle on a lattice Janus sphere in a periodic box: radius
+/// `rho` l0, liquid 0 at x < 0 and liquid 1 at x > 0, in a gas (2), with tensions `t` [N/m]
+/// and the split's momentum correction as `corrected`.
+fn janus_sphere_forces(
+    rho: f64,
+    t: impl Fn(usize, usize) -> f64 + Sync,
+    corrected: bool,
+) -> Vec<Vec3> {
+    let half = (rho + 7.0).ceil() as usize;
+    let len = 2.0 * half as f64 * L0;
+    let b = PeriodicBox::new([Some([0.0, len]); 3]);
+    let centre = Vec3::repeat(half as f64 * L0);
+    let c = cloud(
+        lattice([2 * half; 3]),
+        move |x| {
+            let d = x - centre;
+            if d.norm() < rho * L0 {
+                u8::from(d.x > 0.0)
+            } else {
+                2
+            }
+        },
+        b,
+    );
+    let mut s = ForceScratch {
+        split_momentum_correction: corrected,
+        ..ForceScratch::default()
+    };
+    s.evaluate(&c.input(), 3, t, Walls::Absent);
+    s.force
+}
+
+#[test]
+fn a_fold_in_an_interface_pulls_a_twentieth_more_than_its_line_force() {
+    // A square column of liquid (side 2a, periodic along y) in another: each 90° fold of its
+    // interface is a line force σ(t_1 + t_2) per length in the continuum, t the faces'
+    // tangents away from the fold. The force summed over the quadrant of one fold, per σ and
+    // length, measured −1.0504 along x and z at a = 8, 12, 16 and 24 l0 alike: the colour
+    // kernel rounds the fold over its reach, and the rounding does not shrink with the fold's
+    // distance from the others. A sphere's face pulls 0.99 of its Laplace force (the test
+    // above), so where the split's folds do not cancel (off Neumann's balance) a drop is
+    // pushed: the split's momentum correction (next test). Bounds ±0.01 around the measured
+    // 1.050: the fold's error, 0.05, is five times that
+    let (a, ny) = (12usize, 6usize);
+    let n = 2 * a + 16;
+    let side = n as f64 * L0;
+    let b = PeriodicBox::new([
+        Some([0.0, side]),
+        Some([0.0, ny as f64 * L0]),
+        Some([0.0, side]),
+    ]);
+    let mid = side / 2.0;
+    let inside =
+        move |x: Vec3| (x.x - mid).abs() < a as f64 * L0 && (x.z - mid).abs() < a as f64 * L0;
+    let c = cloud(lattice([n, ny, n]), move |x| u8::from(!inside(x)), b);
+    let s = evaluate(&c);
+    let fold: Vec3 = (0..c.n_fluid)
+        .filter(|&i| c.pos[i].x > mid && c.pos[i].z > mid)
+        .map(|i| s.force[i])
+        .sum::<Vec3>()
+        / (SIGMA * ny as f64 * L0);
+    eprintln!("one fold's force per σ and length: {fold:?}");
+    for component in [-fold.x, -fold.z] {
+        assert!((component - 1.05).abs() < 0.01, "{fold:?}");
+    }
+    assert!(fold.y.abs() < 1e-12, "{fold:?}");
+}
+
+#[test]
+fn the_split_conserves_momentum_off_neumann_s_balance() {
+    // Matte/slag's tensions (σ01 = 0.1, σ02 = 0.4, σ12 = 0.2 N/m; σ02 > σ01 + σ12, no
+    // Neumann triangle) on a Janus sphere: the liquids' folds at their line with the gas do
+    // not cancel and, uncorrected, push the drop along x (measured −7.4e-6 N at ρ = 8 l0 and
+    // −3.0e-5 N at 12 l0: 0.74 % and 1.96 % of the two liquids' difference in line force
+    // 2πR (σ02 − σ12); bound 0.3 %, so that the test fails if the push it removes vanishes).
+    // With the correction the net force is round-off (~1e5 terms of up to 1e-6 N; 1e-18 N
+    // measured, bound 1e-15 N). Each share is corrected on its own (its closed interface's
+    // force vanishes whatever the others do), so identical liquids (0.4, 0.4), whose net
+    // vanishes by symmetry, are corrected too: no particle's force changes by more than 1 %
+    // of the largest (a small uniform traction per share, not a reshaping of the force)
+    let ms = |a: usize, b: usize| match (a.min(b), a.max(b)) {
+        (0, 1) => 0.1,
+        (0, 2) => 0.4,
+        (1, 2) => 0.2,
+        _ => 0.0,
+    };
+    for rho in [8.0, 12.0] {
+        let raw: Vec3 = janus_sphere_forces(rho, ms, false).iter().sum();
+        let net: Vec3 = janus_sphere_forces(rho, ms, true).iter().sum();
+        let line = 2.0 * std::f64::consts::PI * rho * L0 * 0.2;
+        eprintln!(
+            "ρ = {rho} l0: net {raw:?} N uncorrected ({:.4} of 2πR(σ02 − σ12)), {net:?} N corrected",
+            raw.x / line
+        );
+        assert!(
+            raw.x.abs() > 0.003 * line,
+            "the uncorrected push vanished: {raw:?}"
+        );
+        assert!(net.norm() < 1e-15, "{net:?}");
+    }
+    let identical = |a: usize, b: usize| match (a.min(b), a.max(b)) {
+        (0, 1) => 0.1,
+        (0, 2) | (1, 2) => 0.4,
+        _ => 0.0,
+    };
+    let before = janus_sphere_forces(8.0, identical, false);
+    let after = janus_sphere_forces(8.0, identical, true);
+    let largest = before.iter().fold(0.0f64, |m, b| m.max(b.norm()));
+    let change = before
+        .iter()
+        .zip(&after)
+        .fold(0.0f64, |m, (b, a)| m.max((a - b).norm()));
+    eprintln!("identical liquids: largest change {change:e} of {largest:e} N");
+    assert!(change < 0.01 * largest, "{change:e} of {largest:e} N");
+}

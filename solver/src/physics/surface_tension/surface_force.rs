@@ -27,7 +27,8 @@
 //! normals near a wall are turned to the contact angle's.
 //!
 //! Not a pair form: linear momentum is conserved only as far as `κ` is uniform on a closed
-//! interface. The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
+//! interface; each term of the three-liquid split is made to conserve it
+//! ([`momentum_correction`]). The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
 //! gathers over each wall particle's list: the bits do not depend on the thread count.
 
 pub mod contact_line;
@@ -223,7 +224,11 @@ impl ForceScratch {
                     *f += g * (inp.vol[i] * s * *k); // Brackbill et al. 1992: σ κ ∇c
                 });
             if corrected {
-                let geometry = normal_walls.map(|_| self.wall_geometry.as_slice());
+                let geometry = normal_walls.map(|w| Facing {
+                    geometry: self.wall_geometry.as_slice(),
+                    l0_m: w.l0_m,
+                    blend_m,
+                });
                 momentum_correction(inp, &self.gradient[..n], geometry, &mut self.term_force);
                 self.force
                     .par_iter_mut()
@@ -237,10 +242,23 @@ impl ForceScratch {
 }
 
 /// Below this fraction of the largest eigenvalue of the walls' normal moment
-/// `Σ n_w ⊗ n_w` (over a term's band particles near walls), a direction is one no wall faces
-/// ([`momentum_correction`]): lattice round-off of a plate's normal is ~1e-16 per component,
-/// squared ~1e-32, and a wall tilted by 1e-4 rad (1e-8) still counts as facing it.
-const UNFACED_EIGENVALUE_FRACTION: f64 = 1e-9;
+/// `Σ w_i n_w ⊗ n_w` (over a term's band particles within the wall normal's blend, weighted as
+/// it turns them), a direction is one no wall faces ([`momentum_correction`]). The discrete
+/// wall normal of a particle over a lattice plate leans by up to 2.6e-3 rad within 3 l0 of it
+/// at any offset along the plate (8e-4 rms; Wendland C2 at r_e = 4.2 l0; 0.15 rad at 3–4 l0,
+/// outside the blend), so a plate's moment along itself is below ~1e-5 of the largest; a
+/// direction counts as faced from 1e-3 (walls leaning by ~2° rms along it).
+const UNFACED_EIGENVALUE_FRACTION: f64 = 1e-3;
+
+/// The wall normal's geometry as [`momentum_correction`] reads it.
+#[derive(Clone, Copy)]
+struct Facing<'a> {
+    /// The wall's unit normal and distance [m] per fluid particle (zero normal: no wall near).
+    geometry: &'a [(Vec3, f64)],
+    /// The lattice spacing [m] and the blend [m] of [`wall_normal::turned`].
+    l0_m: f64,
+    blend_m: f64,
+}
 
 /// Makes one term of the three-liquid split conserve linear momentum (docs/model.md §4b):
 /// subtracts from its force `force` [N] (one per fluid particle) the net `N = Σ_i F_i` as a
@@ -250,16 +268,16 @@ const UNFACED_EIGENVALUE_FRACTION: f64 = 1e-9;
 /// interface folds at a triple line (a 90° fold pulls 1.05 of its line force, a sphere's face
 /// 0.99 of its Laplace force, lattice unit tests), and off Neumann's balance the folds of the
 /// shares do not cancel. `P` projects on the directions that no wall faces: without walls
-/// (`walls = None`, or no band particle near one) every direction; with the wall normal's
-/// geometry `walls` (the wall's unit normal per fluid particle, zero away from walls), those
-/// orthogonal to every wall normal that the term's band particles see — along a plate, the
-/// plate's two directions — since a share turned at one angle along its whole boundary on a
-/// plane pushes that boundary evenly (no net along it) while the wall takes the push across.
-/// The sums run in particle order (the same bits for any thread count).
+/// (`walls = None`, or no band particle near one) every direction; under the wall normal
+/// (`walls`), those along which the wall normals of the band particles it turns have almost no
+/// moment ([`UNFACED_EIGENVALUE_FRACTION`]) — along a plate, the plate's two directions —
+/// since a share turned at one angle along its whole boundary on a plane pushes that boundary
+/// evenly (no net along it) while the wall takes the push across. The sums run in particle
+/// order (the same bits for any thread count).
 fn momentum_correction<K: Kernel>(
     inp: &StressInput<K>,
     gradient: &[Vec3],
-    walls: Option<&[(Vec3, f64)]>,
+    walls: Option<Facing>,
     force: &mut [Vec3],
 ) {
     let mut net = Vec3::zeros();
@@ -272,7 +290,11 @@ fn momentum_correction<K: Kernel>(
         net += f;
         area += inp.vol[i] * g.norm();
         if let Some(w) = walls {
-            faced += w[i].0 * w[i].0.transpose();
+            let (nw, dist_m) = w.geometry[i];
+            if nw != Vec3::zeros() {
+                let weight = wall_normal::turned_weight(dist_m, w.l0_m, w.blend_m);
+                faced += nw * nw.transpose() * weight;
+            }
         }
     }
     if area == 0.0 {

@@ -327,3 +327,26 @@ fn the_split_conserves_momentum_off_neumann_s_balance() {
     eprintln!("identical liquids: largest change {change:e} of {largest:e} N");
     assert!(change < 0.01 * largest, "{change:e} of {largest:e} N");
 }
+
+#[test]
+fn the_corrected_split_has_the_same_bits_for_any_thread_count() {
+    // the correction's sums run in particle order
+    let centre = Vec3::repeat(6.0 * L0);
+    let c = cloud(
+        lattice([12, 12, 12]),
+        move |x| {
+            let d = x - centre;
+            if d.norm() < 4.0 * L0 {
+                u8::from(d.x > 0.0)
+            } else {
+                2
+            }
+        },
+        PeriodicBox::OPEN,
+    );
+    assert_same_bits_for_any_thread_count(|| {
+        let mut s = ForceScratch::default();
+        s.evaluate(&c.input(), 3, three(0.1, 0.4, 0.2), Walls::Absent);
+        s
+    });
+}

@@ -141,6 +141,14 @@ pub fn complete_with_wall_colour<K: Kernel>(
     });
 }
 
+/// The weight `1 − f` [-] of the contact angle's normal in [`turned`] at distance `dist_m`
+/// [m] from the wall, `f = clip((d_w − l0)/blend, 0, 1)`: 1 on the first layer, 0 beyond the
+/// blend `blend_m` [m] past the lattice spacing `l0_m` [m].
+#[inline]
+pub fn turned_weight(dist_m: f64, l0_m: f64, blend_m: f64) -> f64 {
+    1.0 - ((dist_m - l0_m) / blend_m).clamp(0.0, 1.0)
+}
+
 /// The normal `n` (unit, from side A into side B) of a band particle at distance `dist_m` [m]
 /// along the wall's normal `nw` (unit, into the fluid; zero: no wall near), turned towards the
 /// one that meets the wall at the angle whose cosine is `cos_theta` (measured in side A), over
@@ -152,7 +160,7 @@ pub fn turned(n: Vec3, nw: Vec3, dist_m: f64, cos_theta: f64, l0_m: f64, blend_m
     if nw == Vec3::zeros() {
         return n;
     }
-    let f = ((dist_m - l0_m) / blend_m).clamp(0.0, 1.0);
+    let f = 1.0 - turned_weight(dist_m, l0_m, blend_m);
     if f == 1.0 {
         return n;
     }

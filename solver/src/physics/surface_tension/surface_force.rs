@@ -28,8 +28,9 @@
 //!
 //! Not a pair form: linear momentum is conserved only as far as `κ` is uniform on a closed
 //! interface; each term of the three-liquid split is made to conserve it
-//! ([`momentum_correction`]). The fluid's passes visit each pair once ([`each_pair_once`]), the walls' pass
-//! gathers over each wall particle's list: the bits do not depend on the thread count.
+//! (`momentum_correction`). The fluid's passes visit each pair once ([`each_pair_once`]),
+//! the walls' pass gathers over each wall particle's list: the bits do not depend on the
+//! thread count.
 
 pub mod contact_line;
 pub mod wall_normal;
@@ -56,7 +57,7 @@ pub struct ForceScratch {
     /// diagnostics vary it).
     pub band_gradient_times_r_e: f64,
     /// Whether each term of the three-liquid split is made to conserve linear momentum
-    /// ([`momentum_correction`]; on by default, the tests turn it off to measure what it
+    /// (`momentum_correction`; on by default, the tests turn it off to measure what it
     /// removes).
     pub split_momentum_correction: bool,
     /// `∇c_b` per particle [1/m] (zero off the phases `a` and `b`; walls: zero unless they
@@ -325,8 +326,8 @@ fn momentum_correction<K: Kernel>(
 /// (tension `s` [N/m]) meets the walls of solid `solid`: Young's
 /// `cos θ = (σ_BS − σ_AS)/σ_AB`, clipped to [−1, 1] (`sigma(a, solid)` holds each liquid's
 /// tension against the solid up to the solid's own, which cancels). `None` for a liquid
-/// against all the others (the three-liquid split: its angle is a pair's, particle by
-/// particle, [`Turn`]).
+/// against all the others (the three-liquid split: each share's angle comes from the split's
+/// common level, [`split_wall_level`]).
 pub fn contact_cosine(
     sides: Sides,
     sigma: &impl Fn(usize, usize) -> f64,
@@ -366,7 +367,7 @@ fn turn_cosine(
 }
 
 /// The common level `C` [N/m] of the three-liquid split at walls under the wall normal
-/// ([`turn_cosine`]), given the pair tensions `sigma(a, b)` and each liquid's tension against
+/// (`turn_cosine`), given the pair tensions `sigma(a, b)` and each liquid's tension against
 /// the solid `sigma(a, solid)` up to the solid's own: any `C` gives each pair Young's push, and
 /// a share `σ_k` can turn its normals only as far as `|C − σ_kS| ≤ |σ_k|`. Those intervals
 /// meet wherever every pair has a Young angle (`|σ_kS − σ_lS| ≤ σ_kl = σ_k + σ_l`, and

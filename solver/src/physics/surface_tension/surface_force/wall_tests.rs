@@ -646,8 +646,9 @@ fn with_the_wall_normal_the_split_s_correction_removes_its_push_along_the_wall_o
     // shares 0.15, −0.05, 0.25 N/m) on plate_eq23's Janus hemisphere at θ1 = 75°, on the
     // lattice and with each fluid site moved by up to 0.2 l0 (the discrete wall normal then
     // leans, as in a run: a first version, which took any lean above 1e-9 as a wall facing
-    // that way, corrected nothing in a run). Without the correction the split leaves a net force along the wall
-    // (on the lattice +6.9e-7 N at ρ = 8 l0, −2.17e-5 N at 16 l0); with it, the split
+    // that way, corrected nothing in a run). Without the correction the split leaves a net
+    // force along the wall (on the lattice +6.9e-7 N at ρ = 8 l0, −2.17e-5 N at 16 l0, and
+    // +1.1e-5 N moved at 8 l0); with it, the split
     // conserves momentum along the plate to round-off (~1e4 terms of ~1e-6 N: ~1e-18 N
     // measured; bound 1e-12 of the force across the wall), the force across the wall, which
     // the wall takes, is unchanged (to the eigenvectors' round-off), and no particle's force

@@ -34,6 +34,7 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
     let mut typed = Vec::new();
     let mut surface_force = Vec::new();
     let mut from_measured = Vec::new();
+    let mut surface_force_from_measured = Vec::new();
     for m in &measured.binaries {
         let theta = measured_theta12(m);
         if !theta.is_finite() {
@@ -50,16 +51,18 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
             };
             model.push((theta12_deg, theta));
         }
-        if m.surface_force {
-            continue; // the single drops are the potential's
-        }
         let ingredients = (
-            measured.ingredient(s1, m.theta31_deg),
-            measured.ingredient(s2, m.theta23_deg),
+            measured.ingredient(s1, m.theta31_deg, m.surface_force),
+            measured.ingredient(s2, m.theta23_deg, m.surface_force),
         );
         if let (Some(t31), Some(t23)) = ingredients {
             if let Ok(c) = eq23::solid_contact(s1, s2, SIGMA12, t31, t23) {
-                from_measured.push((c.theta12_deg(), theta));
+                let model = if m.surface_force {
+                    &mut surface_force_from_measured
+                } else {
+                    &mut from_measured
+                };
+                model.push((c.theta12_deg(), theta));
             }
         }
     }
@@ -92,6 +95,12 @@ fn measured_against_eq23(measured: &Measured, dir: &Path) -> anyhow::Result<()> 
                     points: surface_force,
                     kind: SeriesKind::Markers,
                     color: 3,
+                },
+                Series {
+                    label: "surface force (wall normal): Eq. 23 at the angles its single drops measured".into(),
+                    points: surface_force_from_measured,
+                    kind: SeriesKind::Markers,
+                    color: 4,
                 },
             ],
             x_range: Some((0.0, 180.0)),

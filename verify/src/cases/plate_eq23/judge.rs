@@ -108,8 +108,8 @@ impl Judge<'_> {
         Ok(out)
     }
 
-    /// θ12 against Eq. 23 evaluated at the Young angles the single drops measured: the error
-    /// left at the triple line once the ingredients' errors are taken out. The tolerance adds
+    /// θ12 against Eq. 23 evaluated at the Young angles the single drops of the same model
+    /// measured: the error left at the triple line once the ingredients' errors are taken out. The tolerance adds
     /// the single fits' error bounds, amplified by Eq. 23's sensitivity, to the line fit's
     /// (in quadrature, twice, as the other angle tolerances).
     fn against_ingredients(
@@ -119,12 +119,9 @@ impl Judge<'_> {
         measured: f64,
         typed_theta12: f64,
     ) -> Option<Metric> {
-        if b.surface_force {
-            return None; // the single drops are the potential's
-        }
         let (s1, s2) = b.sigma_n_m;
-        let t31 = m.ingredient(s1, b.theta31_deg)?;
-        let t23 = m.ingredient(s2, b.theta23_deg)?;
+        let t31 = m.ingredient(s1, b.theta31_deg, b.surface_force)?;
+        let t23 = m.ingredient(s2, b.theta23_deg, b.surface_force)?;
         let name = format!("θ12 from measured angles {}", b.run.id);
         let metric = Metric::new(self.case, name, "deg", measured).run(b.run);
         let contact = match eq23::solid_contact(s1, s2, SIGMA12, t31, t23) {

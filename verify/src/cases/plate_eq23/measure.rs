@@ -41,6 +41,8 @@ pub struct SingleRun<'r> {
     pub sigma_n_m: f64,
     /// Its Young angle on the plate, as typed [deg].
     pub typed_deg: f64,
+    /// Under the continuum surface force, in a gas (else the paper's potential).
+    pub surface_force: bool,
     /// Its contact angle [deg], or why it could not be measured.
     pub measured_deg: Result<f64, String>,
 }
@@ -55,23 +57,35 @@ pub struct Measured<'r> {
 
 impl Measured<'_> {
     /// The measured contact angle [deg] of the liquid of surface tension `sigma_n_m` [N/m]
-    /// typed at `typed_deg`, if its single drop was run and measured.
-    pub fn ingredient(&self, sigma_n_m: f64, typed_deg: f64) -> Option<f64> {
+    /// typed at `typed_deg`, under the surface force or the potential, if its single drop was
+    /// run and measured.
+    pub fn ingredient(&self, sigma_n_m: f64, typed_deg: f64, surface_force: bool) -> Option<f64> {
         self.singles
             .iter()
-            .find(|s| s.sigma_n_m == sigma_n_m && s.typed_deg == typed_deg)
+            .find(|s| {
+                s.sigma_n_m == sigma_n_m
+                    && s.typed_deg == typed_deg
+                    && s.surface_force == surface_force
+            })
             .and_then(|s| s.measured_deg.as_ref().ok().copied())
     }
 }
 
-/// Measures every run at spacing `l0_m` [m]: runs with one liquid are single drops.
+/// Measures every run at spacing `l0_m` [m]: runs with one liquid besides a gas (a liquid
+/// without a surface tension) are single drops.
 pub fn measure(runs: &[RunData], l0_m: f64) -> anyhow::Result<Measured<'_>> {
     let mut m = Measured {
         binaries: Vec::new(),
         singles: Vec::new(),
     };
     for run in runs {
-        if run.info.scene.liquids.len() == 1 {
+        let liquids = &run.info.scene.liquids;
+        if liquids
+            .iter()
+            .filter(|l| l.surface_tension.is_some())
+            .count()
+            == 1
+        {
             m.singles.push(single_run(run, l0_m));
         } else {
             m.binaries.push(plate_run(run, l0_m)?);
@@ -83,12 +97,17 @@ pub fn measure(runs: &[RunData], l0_m: f64) -> anyhow::Result<Measured<'_>> {
 /// Measures a single drop at spacing `l0_m` [m]: the sessile angle on the plate (z = 0).
 fn single_run(run: &RunData, l0_m: f64) -> SingleRun<'_> {
     let sc = &run.info.scene;
-    let cloud = run.last.cloud(l0_m);
+    let surface_force = is_surface_force(sc);
+    let mut cloud = run.last.cloud(l0_m);
+    if surface_force {
+        cloud.retain_phases(|p| p == 0); // the gas, the second liquid, is left out
+    }
     let classes = surface::classify(&cloud);
     SingleRun {
         run,
         sigma_n_m: sc.liquids[0].surface_tension.unwrap_or(0.0),
         typed_deg: sc.solids[0].contact_angles[&sc.liquids[0].name],
+        surface_force,
         measured_deg: geometry::sessile_contact_angle(&cloud, &classes, 0, 0.0),
     }
 }
@@ -103,7 +122,7 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
     let theta31_deg = sc.solids[0].contact_angles[&sc.liquids[0].name];
     let theta23_deg = sc.solids[0].contact_angles[&sc.liquids[1].name];
     let prediction = Prediction::of(sigma_n_m, theta31_deg, theta23_deg)?;
-    let surface_force = sc.effects.interfacial_tension == solver::scene::TensionModel::SurfaceForce;
+    let surface_force = is_surface_force(sc);
     let mut cloud = run.last.cloud(l0_m);
     if surface_force {
         cloud.retain_phases(|p| p < 2); // the gas, the third liquid, is left out
@@ -123,6 +142,11 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
         contact,
         drift_m_s: drift_m_s(run),
     })
+}
+
+/// Whether a run's scene is under the continuum surface force (else the paper's potential).
+fn is_surface_force(sc: &solver::Scene) -> bool {
+    sc.effects.interfacial_tension == solver::scene::TensionModel::SurfaceForce
 }
 
 /// The speed along the plate [m/s] of the centre of mass of a run's first two liquids (the

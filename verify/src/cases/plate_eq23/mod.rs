@@ -123,11 +123,12 @@ fn surface_force_points(f: Fidelity) -> Vec<Point> {
     }
 }
 
-/// The single drops that measure the ingredients of Eq. 23 in the same setting: each liquid
-/// at each Young angle a point with a line uses (identical liquids are one liquid), in order.
-fn singles(f: Fidelity) -> Vec<(LiquidProps, f64)> {
+/// The single drops that measure the ingredients of Eq. 23 for `points` in the same setting:
+/// each liquid at each Young angle a point with a line uses (identical liquids are one
+/// liquid), in order.
+fn singles(points: &[Point]) -> Vec<(LiquidProps, f64)> {
     let mut v: Vec<(LiquidProps, f64)> = Vec::new();
-    for p in points(f) {
+    for p in points {
         let Ok(pred) = Prediction::of(p.sigma(), p.theta31_deg, p.theta23_deg) else {
             continue;
         };
@@ -251,30 +252,64 @@ const SURFACE_FORCE_HALF_BOX_M: f64 = 2.75e-3;
 /// (Bond number ρgR²/σ = 0.11 for matte) is left out, as the gas's weight would otherwise float the
 /// lighter slag.
 fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
-    let l0 = l0(f);
-    let viscous = |l: LiquidProps| LiquidProps {
+    let (a, b, gas) = (viscous(p.a), viscous(p.b), SURFACE_FORCE_GAS);
+    in_gas(
+        f,
+        surface_force_setting(f, &a)
+            .liquid(&a)
+            .liquid(&b)
+            .gas(&gas)
+            .interface(a.name, b.name, SIGMA12)
+            .interface(a.name, gas.name, a.surface_tension_n_m)
+            .interface(b.name, gas.name, b.surface_tension_n_m)
+            .solid("plate", &[(a.name, p.theta31_deg), (b.name, p.theta23_deg)])
+            .cut_body("drop", drop_shape(), halves(a.name, b.name)),
+    )
+}
+
+/// One liquid's drop (the binary drop's volume) at Young angle `theta_deg` [deg] in the
+/// setting of [`surface_force_scene`]: the ingredient of Eq. 23 under the surface force.
+fn surface_force_single_scene(f: Fidelity, liquid: &LiquidProps, theta_deg: f64) -> solver::Scene {
+    let (a, gas) = (viscous(*liquid), SURFACE_FORCE_GAS);
+    in_gas(
+        f,
+        surface_force_setting(f, &a)
+            .liquid(&a)
+            .gas(&gas)
+            .interface(a.name, gas.name, a.surface_tension_n_m)
+            .solid("plate", &[(a.name, theta_deg)])
+            .body("drop", a.name, drop_shape()),
+    )
+}
+
+/// A liquid at [`SURFACE_FORCE_VISCOSITY_PA_S`].
+fn viscous(l: LiquidProps) -> LiquidProps {
+    LiquidProps {
         viscosity_pa_s: SURFACE_FORCE_VISCOSITY_PA_S,
         ..l
-    };
-    let (a, b, gas) = (viscous(p.a), viscous(p.b), SURFACE_FORCE_GAS);
-    let half = (SURFACE_FORCE_HALF_BOX_M / l0).round() * l0;
-    let top = (2.5 * R_M / l0).round() * l0;
+    }
+}
+
+/// What every run under the surface force shares: spacing, time, the continuum models' kernel,
+/// the surface force with the wall normal's walls, and the sound speed at which the Laplace
+/// pressure of a drop of liquid `first` compresses it by 1 %.
+fn surface_force_setting(f: Fidelity, first: &LiquidProps) -> SceneBuilder {
     let re_over_l0 = solver::scene::Setting::Natsui2021.re_over_l0();
-    SceneBuilder::new(l0, laplace_sound_speed(&a, R_M))
+    SceneBuilder::new(l0(f), laplace_sound_speed(first, R_M))
         .time(surface_force_end_s(f), 2.0e-4)
         .kernel(KernelKind::WendlandC2, SURFACE_FORCE_H_OVER_L0, re_over_l0)
         .paper_effects()
         .tension_model(TensionModel::SurfaceForce)
         .surface_force_walls(SurfaceForceWalls::Normal)
-        .liquid(&a)
-        .liquid(&b)
-        .gas(&gas)
-        .interface(a.name, b.name, SIGMA12)
-        .interface(a.name, gas.name, a.surface_tension_n_m)
-        .interface(b.name, gas.name, b.surface_tension_n_m)
-        .solid("plate", &[(a.name, p.theta31_deg), (b.name, p.theta23_deg)])
-        .cut_body("drop", drop_shape(), halves(a.name, b.name))
-        .gas_over_plate(gas.name, half, top, (2.0 * re_over_l0).ceil() as u32)
+}
+
+/// `b`'s drop in the gas filling the periodic box above the plate, built.
+fn in_gas(f: Fidelity, b: SceneBuilder) -> solver::Scene {
+    let l0 = l0(f);
+    let half = (SURFACE_FORCE_HALF_BOX_M / l0).round() * l0;
+    let top = (2.5 * R_M / l0).round() * l0;
+    let layers = (2.0 * solver::scene::Setting::Natsui2021.re_over_l0()).ceil() as u32;
+    b.gas_over_plate(SURFACE_FORCE_GAS.name, half, top, layers)
         .build()
 }
 
@@ -395,7 +430,7 @@ impl Case for PlateEq23 {
             scene: scene(f, &p),
             snapshot_times_s: vec![],
         });
-        let singles = singles(f).into_iter().map(|(l, th)| RunSpec {
+        let ingredients = singles(&points(f)).into_iter().map(|(l, th)| RunSpec {
             id: single_id(&l, th),
             scene: single_scene(f, &l, th),
             snapshot_times_s: vec![],
@@ -405,7 +440,16 @@ impl Case for PlateEq23 {
             scene: surface_force_scene(f, &p),
             snapshot_times_s: vec![],
         });
-        binaries.chain(singles).chain(surface_force).collect()
+        let surface_force_singles = singles(&surface_force_points(f))
+            .into_iter()
+            .map(|(l, th)| RunSpec {
+                id: format!("{SURFACE_FORCE_PREFIX}{}", single_id(&l, th)),
+                scene: surface_force_single_scene(f, &l, th),
+                snapshot_times_s: vec![],
+            });
+        (binaries.chain(ingredients).chain(surface_force))
+            .chain(surface_force_singles)
+            .collect()
     }
     fn analyse(&self, f: Fidelity, runs: &[RunData], dir: &Path) -> anyhow::Result<Vec<Metric>> {
         analysis::analyse(self, f, runs, dir)

@@ -9,7 +9,8 @@
 //! simulated points on them. Beside the paper's potential, Eq. 23's points away from 90° run
 //! under the candidate continuum model (the surface force with the wall normal's walls, in a
 //! gas, zero gravity, 40 ms; `csfn_` runs), judged on the same metrics against the typed
-//! angles.
+//! angles, and, as the potential's, against Eq. 23 at the angles single drops of each liquid
+//! measured in the same setting (`csfn_single_` runs).
 
 mod draw;
 mod judge;
@@ -415,7 +416,8 @@ impl Case for PlateEq23 {
                  each liquid alone at each Young angle a line uses, for Eq. 23's ingredients; \
                  and Eq. 23's eight points away from 90° under the surface force with the wall \
                  normal, in a gas (38,720 fluid and 17,424 wall particles, h = 1.3 l0, zero \
-                 gravity, the liquids at 0.7 Pa·s, 40 ms)"
+                 gravity, the liquids at 0.7 Pa·s, 40 ms), with their ingredients, each liquid \
+                 alone at each Young angle they use, in the same setting"
             }
             Fidelity::Paper => "the paper's l0 = 0.06 mm, dt = 1e-6 s",
         };

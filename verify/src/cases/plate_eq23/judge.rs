@@ -109,9 +109,9 @@ impl Judge<'_> {
     }
 
     /// θ12 against Eq. 23 evaluated at the Young angles the single drops of the same model
-    /// measured: the error left at the triple line once the ingredients' errors are taken out. The tolerance adds
-    /// the single fits' error bounds, amplified by Eq. 23's sensitivity, to the line fit's
-    /// (in quadrature, twice, as the other angle tolerances).
+    /// measured: the error left at the triple line once the ingredients' errors are taken
+    /// out. The tolerance adds the single fits' error bounds, amplified by Eq. 23's
+    /// sensitivity, to the line fit's (in quadrature, twice, as the other angle tolerances).
     fn against_ingredients(
         &self,
         b: &PlateRun,

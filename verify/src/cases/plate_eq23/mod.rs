@@ -269,7 +269,9 @@ fn surface_force_scene(f: Fidelity, p: &Point) -> solver::Scene {
 }
 
 /// One liquid's drop (the binary drop's volume) at Young angle `theta_deg` [deg] in the
-/// setting of [`surface_force_scene`]: the ingredient of Eq. 23 under the surface force.
+/// setting of [`surface_force_scene`]: the ingredient of Eq. 23 under the surface force. Its
+/// sound speed is set by its own liquid's Laplace pressure, as the binary drop's by its first
+/// liquid's.
 fn surface_force_single_scene(f: Fidelity, liquid: &LiquidProps, theta_deg: f64) -> solver::Scene {
     let (a, gas) = (viscous(*liquid), SURFACE_FORCE_GAS);
     in_gas(

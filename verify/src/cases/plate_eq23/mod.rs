@@ -241,7 +241,9 @@ const SURFACE_FORCE_GAS: LiquidProps = LiquidProps {
 };
 
 /// Half the side of the surface force's periodic box [m]: the flattest binary drop
-/// (matte/slag at θ31 = 60°, θ23 = 45°) spreads to a wetted radius of about 1.8 mm.
+/// (matte/slag at θ31 = 60°, θ23 = 45°) spreads to a wetted radius of about 1.8 mm, and the
+/// flattest single drop (slag at 45°, a spherical cap of the drop's volume) to 1.83 mm, 0.92 mm
+/// (7 l0) short of the box's side.
 const SURFACE_FORCE_HALF_BOX_M: f64 = 2.75e-3;
 
 /// The binary drop of [`scene`] under the surface force with the wall normal's walls

@@ -1,7 +1,7 @@
 //! Diagnostic: surface/interface classification statistics of a saved particle dump.
 fn main() {
     let a: Vec<String> = std::env::args().collect();
-    let dump = verify::suite::dump::Dump::read(std::path::Path::new(&a[1])).unwrap();
+    let dump = verify::output::dump::Dump::read(std::path::Path::new(&a[1])).unwrap();
     let l0: f64 = a[2].parse().unwrap();
     let cloud = dump.cloud(l0);
     let c = verify::measure::surface::classify(&cloud);

@@ -1,6 +1,6 @@
 //! Particle views shared by the cases on a plate.
 
-use crate::suite::dump::Dump;
+use crate::output::dump::Dump;
 
 /// The particles of `dump` in the slice |y| < `l0_m` [m], seen from the side as (x, z) [mm],
 /// each with its liquid's phase as class, and the wall particles within |x| < `wall_half_m`

@@ -2,6 +2,7 @@
 //! snapshots (VTK) and the checkpoint; and the error of a run that did not complete.
 
 pub mod checkpoint;
+pub mod dump;
 pub mod error;
 pub mod machine;
 pub mod run_info;

@@ -2,8 +2,10 @@
 //!
 //! The loop (`stepping`) only steps the simulation and tells its [`Observer`]s of every step,
 //! every output time and the end. Each output is one observer in `outputs`, built from its
-//! option in [`RunOptions`]; callers add their own (the suite's probes and particle dumps). The
-//! run record (`run_info.json`) is written at the start and, last, at the end.
+//! option in [`RunOptions`]; callers add their own (the suite's probes and particle dumps at
+//! its snapshot times). Every run that ends, completed or failed, writes its final particle
+//! state ([`FINAL`]). The run record (`run_info.json`) is written at the start and, last, at
+//! the end.
 
 mod observer;
 mod outputs;
@@ -12,6 +14,8 @@ mod stepping;
 
 pub use crate::output::RunError;
 pub use observer::{Observer, RunView};
+pub(crate) use outputs::final_state::dump as write_particles;
+pub use outputs::final_state::FINAL;
 pub use start::{load_scene, prepare_out_dir};
 
 use crate::output::run_info::RunInfo;

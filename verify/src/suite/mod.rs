@@ -6,7 +6,6 @@
 //! simulations and post-processing). Finished runs are reused unless forced.
 
 pub mod compare;
-pub mod dump;
 pub mod metric;
 pub mod overrides;
 pub mod runner;
@@ -136,9 +135,9 @@ pub struct RunData {
     /// `probes.csv` (the case's extra columns per output; may be empty).
     pub probes: Table,
     /// The final particle state.
-    pub last: dump::Dump,
+    pub last: crate::output::dump::Dump,
     /// Dumps at the requested snapshot times `(time [s], dump)`.
-    pub snapshots: Vec<(f64, dump::Dump)>,
+    pub snapshots: Vec<(f64, crate::output::dump::Dump)>,
 }
 
 impl RunData {

@@ -193,7 +193,7 @@ pub fn analyse_case(
     for mut spec in case.runs(fidelity) {
         let rdir = dir.join(&spec.id);
         // a run still going (or killed) has no final state yet: not measured
-        if !(RunInfo::path(&rdir).exists() && rdir.join(snapshots::FINAL).exists()) {
+        if !(RunInfo::path(&rdir).exists() && rdir.join(crate::run::FINAL).exists()) {
             continue;
         }
         spec.scene = super::overrides::apply(&spec.scene, overrides)

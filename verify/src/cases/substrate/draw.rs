@@ -1,7 +1,7 @@
 //! Paper B's plots: time histories of the probes and views of particle dumps.
 
+use crate::output::dump::Dump;
 use crate::report::plot::{self, ParticleView, Plot, Series, SeriesKind};
-use crate::suite::dump::Dump;
 use crate::suite::RunData;
 use std::path::Path;
 

@@ -3,8 +3,8 @@
 
 use super::WALL_Z_M;
 use crate::measure::{geometry, side_view, surface};
+use crate::output::dump::Dump;
 use crate::output::timeseries::RunColumn;
-use crate::suite::dump::Dump;
 use crate::suite::RunData;
 use solver::Simulation;
 

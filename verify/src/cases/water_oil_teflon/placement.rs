@@ -6,8 +6,8 @@
 //! oil reached the plate's edge (where the run stops being the paper's open plate), and whether
 //! any oil stayed over the water as in the paper's picture.
 
+use crate::output::dump::Dump;
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn, Table};
-use crate::suite::dump::Dump;
 
 /// How far the liquids' common centre of mass moved off the plate's axis over a run.
 #[derive(Clone, Copy, Debug, PartialEq)]

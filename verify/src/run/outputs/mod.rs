@@ -1,8 +1,9 @@
-//! The standard outputs of a run, one observer per file: the time series (always), `.vtu`
-//! snapshots (`vtk_every`), checkpoints (`checkpoint_steps`, `checkpoint_minutes`, and on an
+//! The standard outputs of a run, one observer per file: the time series and the final
+//! particle state (always), `.vtu` snapshots (`vtk_every`), checkpoints (`checkpoint_steps`, `checkpoint_minutes`, and on an
 //! interrupt) and the progress bar (`progress`). A new output is one file here and its option.
 
 mod checkpoint;
+pub(crate) mod final_state;
 mod progress;
 mod timeseries;
 mod vtu;
@@ -25,6 +26,7 @@ pub(super) fn from_options<'o>(
         list.push(Box::new(vtu::Vtu::every(every)));
     }
     list.extend(extra);
+    list.push(Box::new(final_state::FinalState));
     // after every file of an output: a checkpoint taken at output k finds all of k written
     list.push(Box::new(checkpoint::Checkpoints::new(opts, run)));
     if opts.progress {

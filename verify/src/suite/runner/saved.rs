@@ -1,11 +1,12 @@
 //! A case's runs read back from their folders: whether a finished run can be reused, and its
 //! record, time series, probes and particle dumps.
 
-use super::snapshots::{snapshot_name, FINAL};
+use super::snapshots::snapshot_name;
+use crate::output::dump::Dump;
 use crate::output::run_info::RunInfo;
 use crate::output::timeseries::Table;
 use crate::run::Saved;
-use crate::suite::dump::Dump;
+use crate::run::FINAL;
 use crate::suite::{RunData, RunSpec};
 use std::path::Path;
 

@@ -1,13 +1,8 @@
-//! Particle dumps of a case's runs: at the case's snapshot times and at the end
-//! (`particles_final.csv`), for measurements redone without simulating.
+//! Particle dumps of a case's runs at the case's snapshot times, for measurements redone
+//! without simulating (every run writes its final state, [`crate::run::FINAL`], itself).
 
-use crate::output::run_info::Status;
 use crate::output::RunError;
-use crate::run::{Observer, RunView};
-use crate::suite::dump::Dump;
-
-/// The dump of a run's final state.
-pub(super) const FINAL: &str = "particles_final.csv";
+use crate::run::{write_particles, Observer, RunView};
 
 /// The dump file of snapshot time `t_s` [s].
 pub(super) fn snapshot_name(t_s: f64) -> String {
@@ -23,18 +18,10 @@ pub(super) struct Snapshots {
 }
 
 impl Snapshots {
-    /// Dumps at `times_s` [s] (ascending) and at the end.
+    /// Dumps at `times_s` [s] (ascending).
     pub(super) fn at(times_s: Vec<f64>) -> Snapshots {
         Snapshots { times_s, next: 0 }
     }
-}
-
-/// Writes the fluid particles of `run` to `name` in its folder.
-fn dump(run: &RunView, name: &str) -> Result<(), RunError> {
-    let path = run.out_dir.join(name);
-    Dump::of(&run.sim.particles, run.sim.time_s)
-        .write(&path, false)
-        .map_err(|e| RunError::io("cannot write", &path, e))
 }
 
 impl Observer for Snapshots {
@@ -52,17 +39,9 @@ impl Observer for Snapshots {
         while self.next < self.times_s.len()
             && run.sim.time_s >= self.times_s[self.next] * (1.0 - 1e-9)
         {
-            dump(run, &snapshot_name(self.times_s[self.next]))?;
+            write_particles(run, &snapshot_name(self.times_s[self.next]))?;
             self.next += 1;
         }
         Ok(())
-    }
-
-    fn on_end(&mut self, run: &RunView) -> Result<(), RunError> {
-        // an interrupted run has no final state yet: it resumes from its checkpoint
-        if run.info.status == Status::Interrupted {
-            return Ok(());
-        }
-        dump(run, FINAL)
     }
 }

@@ -1,5 +1,6 @@
 //! Files a run writes: the observables' time series (CSV), the run record (JSON), particle
-//! snapshots (VTK) and the checkpoint; and the error of a run that did not complete.
+//! dumps (CSV: the final state, a case's snapshot times), particle snapshots (VTK) and the
+//! checkpoint; and the error of a run that did not complete.
 
 pub mod checkpoint;
 pub mod dump;

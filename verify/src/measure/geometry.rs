@@ -117,7 +117,9 @@ pub fn sessile_angle_error_deg(r_over_l0: f64, theta_deg: f64) -> Option<f64> {
 
 /// The error bound [deg] of [`solid_liquid_liquid_angle`] on voxelised tilted planar
 /// interfaces at a drop radius of `r_over_l0` spacings, as its tests check it (worst measured
-/// 2.74° at R/8, 0.97° at R/16); `None` below R/8.
+/// 2.74° at R/8, 0.97° at R/16); `None` below R/8. It holds for planar and spherical
+/// interfaces only: one that bends over the band as a saddle (profile radius 3R) is read
+/// 12–17° off its foot at R/8 and 13–21.5° at R/16, always towards 90° (tests).
 pub fn triple_line_angle_error_deg(r_over_l0: f64) -> Option<f64> {
     if r_over_l0 >= 16.0 {
         Some(1.2)
@@ -1245,6 +1247,55 @@ mod tests {
                 assert!((t - expected).abs() < 0.6, "cap {th}, swap {swap}: {t}");
             }
         }
+    }
+
+    #[test]
+    fn bent_liquid_liquid_interfaces_on_a_wall_read_towards_their_bend() {
+        // The line fit's limit, measured rather than assumed: a 1–2 interface that bends over
+        // the band is not read at its foot. Interface: the saddle x = b z + k (z² − y²)/2 (zero
+        // mean curvature at the foot, as between two drops of one pressure) splitting a
+        // hemisphere, foot angle θ (b = −cot θ), profile radius ρ = 3R at the foot
+        // (k = ∓(1 + b²)^1.5/ρ, bending towards 90° upwards, as an interface between two drops
+        // must to meet the gas; about the bend of the plate_eq23 runs' interfaces under the
+        // surface force: a quadric fitted to their 1–2 pair midpoints (scratch) bends with
+        // radii of 2.6–3.3 R, their sphere fits have radii of 3.4–4.4 R). Four placements against
+        // the lattice. Measured: at R/8 the plane is kept and reads the band's mean tilt,
+        // 12.0–16.7° off the foot; at R/16 the sphere halves the plane's RMS and is taken, and
+        // reads 13.0–21.5° off (a sphere cannot follow a saddle; the plane alone reads these
+        // points 2.9–5.8° off). Every reading is off towards 90°. Asserted: that sign, and the
+        // size between half the smallest and 1.5 times the largest measured at each resolution
+        // — a characterisation: the bound of triple_line_angle_error_deg holds for planar and
+        // spherical interfaces only.
+        let mut bad = Vec::new();
+        for (div, lo, hi) in [(8.0, 6.0, 25.0), (16.0, 6.5, 32.0)] {
+            let l0 = R / div;
+            for th in [45.0_f64, 60.0, 120.0, 135.0] {
+                let b = -1.0 / th.to_radians().tan();
+                let k = -b.signum() * (1.0 + b * b).powf(1.5) / (3.0 * R);
+                for x0 in [0.0, 0.21, 0.44, 0.5] {
+                    let mut cloud =
+                        voxelise([-R - l0, -R - l0, 0.0], [R + l0, R + l0, R + l0], l0, |x| {
+                            if !(x[2] > 0.0 && in_ball(x, [0.0; 3], R)) {
+                                return None;
+                            }
+                            let f = b * x[2] + 0.5 * k * (x[2] * x[2] - x[1] * x[1]);
+                            Some(u8::from(x[0] - x0 * l0 > f))
+                        });
+                    add_wall(&mut cloud, 1.5 * R, 3);
+                    let t = solid_liquid_liquid_angle(&cloud, &classify(&cloud), 0.0).unwrap();
+                    let towards_90 = (t - th) * (90.0 - th).signum();
+                    println!(
+                        "R/{div} θ {th}° x0 {x0} l0: θ12 {t:.2}° ({towards_90:+.2}° towards 90°)"
+                    );
+                    if !(lo..=hi).contains(&towards_90) {
+                        bad.push(format!(
+                            "R/{div} θ {th} x0 {x0}: {t} ({towards_90:+.2}° towards 90°)"
+                        ));
+                    }
+                }
+            }
+        }
+        assert!(bad.is_empty(), "{bad:#?}");
     }
 
     #[test]

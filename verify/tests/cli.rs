@@ -55,7 +55,10 @@ fn run_writes_timeseries_run_info_and_snapshots() {
     check_snapshots(&out, info["fluid_particles"].as_u64().unwrap() as usize);
     // the final state: every fluid particle at the end time
     let last = verify::output::dump::Dump::read(&out.join(verify::run::FINAL)).unwrap();
-    assert_eq!(last.pos.len() as u64, info["fluid_particles"].as_u64().unwrap());
+    assert_eq!(
+        last.pos.len() as u64,
+        info["fluid_particles"].as_u64().unwrap()
+    );
     assert!((last.time_s - 2e-5).abs() < 1e-12, "{}", last.time_s);
 
     // an existing output folder is not overwritten without --force (exit code 3)

@@ -83,6 +83,42 @@ fn run_writes_timeseries_run_info_and_snapshots() {
 }
 
 #[test]
+fn measure_takes_the_final_state_of_a_run_without_snapshots() {
+    let dir = tmp("final");
+    let scene = scene_file(&dir, SMALL);
+    let out = dir.join("out");
+    let st = verify()
+        .arg("run")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .quiet()
+        .unwrap();
+    assert!(st.success());
+    assert!(!out.join("particles.pvd").exists());
+    let m = verify().arg("measure").arg(&out).output().unwrap();
+    let err = String::from_utf8_lossy(&m.stderr);
+    assert!(m.status.success(), "{err}");
+    // the header and one row: the drop at the end time (2e-5 s), all of its particles
+    let csv = std::fs::read_to_string(out.join("measures.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2, "{csv}");
+    assert!(
+        (rows[1][0].parse::<f64>().unwrap() - 2e-5).abs() < 1e-12,
+        "{csv}"
+    );
+    let info: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("run_info.json")).unwrap()).unwrap();
+    assert_eq!(rows[1][2], info["fluid_particles"].to_string(), "{csv}");
+    // nothing to measure: neither snapshots nor a final state
+    std::fs::remove_file(out.join(verify::run::FINAL)).unwrap();
+    let m = verify().arg("measure").arg(&out).output().unwrap();
+    assert!(!m.status.success());
+    assert!(String::from_utf8_lossy(&m.stderr).contains("no final state"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn an_invalid_scene_exits_with_code_2_and_names_the_field() {
     let dir = tmp("bad");
     let scene = scene_file(&dir, &SMALL.replace("density = 4500.0", "density = -1.0"));

@@ -35,6 +35,35 @@ impl Dump {
         }
     }
 
+    /// The wall particles of `scene` as a dump, rebuilt as the run placed them (walls never
+    /// move, so the dumps leave them out); `None` if the scene has no walls.
+    pub fn walls_of(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
+        if scene.walls.is_empty() {
+            return Ok(None);
+        }
+        let model = solver::Model::from_scene(scene)?;
+        let (p, _, _) = solver::setup::build_particles(scene, &model)?;
+        let n = p.n_wall();
+        Ok(Some(Dump {
+            time_s: 0.0,
+            pos: p.pos[p.n_fluid..].iter().map(|x| [x.x, x.y, x.z]).collect(),
+            vel: vec![[0.0; 3]; n],
+            phase: p.phase[p.n_fluid..].to_vec(),
+            wall: vec![true; n],
+        }))
+    }
+
+    /// This dump with the particles of `walls` appended (`None`: unchanged).
+    pub fn with_walls(mut self, walls: Option<&Dump>) -> Dump {
+        if let Some(w) = walls {
+            self.pos.extend_from_slice(&w.pos);
+            self.vel.extend_from_slice(&w.vel);
+            self.phase.extend_from_slice(&w.phase);
+            self.wall.extend_from_slice(&w.wall);
+        }
+        self
+    }
+
     /// The liquid particles as a measurement cloud (walls as neighbours).
     pub fn cloud(&self, l0_m: f64) -> crate::measure::surface::Cloud {
         let mut c = crate::measure::surface::Cloud {

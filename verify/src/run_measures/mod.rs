@@ -2,7 +2,8 @@
 //! and snapshot, the height above the wall, the wetted radius and its rate of change, the
 //! side-view contact angle with its error bound, the l = 2 and l = 4 shape moments and the
 //! centroid → `measures.csv` and two plots, with the Young–Laplace equilibrium drawn in where one
-//! liquid rests on one horizontal wall. The snapshots are the run's `.vtu` series (`run --vtk N`).
+//! liquid rests on one horizontal wall. The snapshots are the run's `.vtu` series (`run --vtk N`);
+//! a run without one is measured at its end, from `particles_final.csv`.
 //! The same functions of [`crate::measure`] as the cases use. Under a continuum tension model a
 //! liquid declared without a surface tension is the gas around the others: it is left out of
 //! the measures, and the others' surfaces against it are their free surfaces.
@@ -13,8 +14,10 @@ use crate::analytic::{lamb, young_laplace};
 use crate::measure::geometry::{self, sessile_angle_error_deg};
 use crate::measure::shape::{axial_quadrupole_q2, cubic_harmonic_q4};
 use crate::measure::surface::{self, Cloud};
+use crate::output::dump::Dump;
 use crate::output::run_info::RunInfo;
 use crate::output::vtk_read::{read_pvd, read_vtu};
+use crate::run::FINAL;
 use solver::scene::WallShape;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -70,34 +73,49 @@ fn wall_top(scene: &solver::Scene) -> Option<f64> {
     }
 }
 
-/// Measures the run in `dir` from its `.vtu` snapshots.
-pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
-    let info = RunInfo::read(dir)?;
-    let scene = &info.scene;
+/// The run's snapshots: `(time [s], particles)`, the walls as the particles' neighbours.
+fn snapshots(dir: &Path, scene: &solver::Scene) -> anyhow::Result<Vec<(f64, Cloud)>> {
     let l0 = scene.discretisation.l0;
     let pvd = dir.join("particles.pvd");
     if !pvd.exists() {
-        anyhow::bail!(
-            "{}: no snapshots (particles.pvd); run the scene with `--vtk N` to measure it",
-            dir.display()
-        );
+        let last = dir.join(FINAL);
+        if !last.exists() {
+            anyhow::bail!(
+                "{}: no snapshots (particles.pvd) and no final state ({FINAL}); run the scene \
+                 with `--vtk N` to measure it over time",
+                dir.display()
+            );
+        }
+        let dump = Dump::read(&last)?.with_walls(Dump::walls_of(scene)?.as_ref());
+        return Ok(vec![(dump.time_s, dump.cloud(l0))]);
     }
     let walls = match read_vtu(&dir.join("walls.vtu")) {
         Ok(w) => w.pos,
         Err(_) => Vec::new(),
     };
-    let z_w = wall_top(scene);
-    let n_liquids = scene.liquids.len();
-    let gas = gases(scene);
-    let mut rows = Vec::new();
+    let mut out = Vec::new();
     for (t, file) in read_pvd(&pvd).map_err(anyhow::Error::msg)? {
         let s = read_vtu(&dir.join(&file)).map_err(anyhow::Error::msg)?;
-        let mut cloud = Cloud {
+        let cloud = Cloud {
             pos: s.pos,
             phase: s.phase.iter().map(|&p| p as u8).collect(),
             walls: walls.clone(),
             l0_m: l0,
         };
+        out.push((t, cloud));
+    }
+    Ok(out)
+}
+
+/// Measures the run in `dir` from its `.vtu` snapshots, or at its end from its final state.
+pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
+    let info = RunInfo::read(dir)?;
+    let scene = &info.scene;
+    let z_w = wall_top(scene);
+    let n_liquids = scene.liquids.len();
+    let gas = gases(scene);
+    let mut rows = Vec::new();
+    for (t, mut cloud) in snapshots(dir, scene)? {
         cloud.retain_phases(|p| !gas[p as usize]);
         let classes = surface::classify(&cloud);
         for k in (0..n_liquids).filter(|&k| !gas[k]) {

@@ -20,23 +20,6 @@ pub(super) fn resumable(dir: &Path, spec: &RunSpec) -> bool {
     crate::run::saved(dir, &spec.scene) == Saved::Stopped
 }
 
-/// The wall particles of a scene as a dump (empty if it has none).
-fn wall_dump(scene: &solver::Scene) -> anyhow::Result<Option<Dump>> {
-    if scene.walls.is_empty() {
-        return Ok(None);
-    }
-    let model = solver::Model::from_scene(scene)?;
-    let (p, _, _) = solver::setup::build_particles(scene, &model)?;
-    let n = p.n_wall();
-    Ok(Some(Dump {
-        time_s: 0.0,
-        pos: p.pos[p.n_fluid..].iter().map(|x| [x.x, x.y, x.z]).collect(),
-        vel: vec![[0.0; 3]; n],
-        phase: p.phase[p.n_fluid..].to_vec(),
-        wall: vec![true; n],
-    }))
-}
-
 /// Reads the run of `spec` back from its folder `dir`.
 pub(super) fn load_run(dir: &Path, spec: &RunSpec) -> anyhow::Result<RunData> {
     let info = RunInfo::read(dir)?;
@@ -47,16 +30,8 @@ pub(super) fn load_run(dir: &Path, spec: &RunSpec) -> anyhow::Result<RunData> {
         Table::default()
     };
     // walls never move: rebuilt from the scene rather than stored
-    let walls = wall_dump(&info.scene)?;
-    let with_walls = |mut d: Dump| {
-        if let Some(w) = &walls {
-            d.pos.extend_from_slice(&w.pos);
-            d.vel.extend_from_slice(&w.vel);
-            d.phase.extend_from_slice(&w.phase);
-            d.wall.extend_from_slice(&w.wall);
-        }
-        d
-    };
+    let walls = Dump::walls_of(&info.scene)?;
+    let with_walls = |d: Dump| d.with_walls(walls.as_ref());
     let last = with_walls(Dump::read(&dir.join(FINAL))?);
     let mut snapshots = Vec::new();
     for &t in &spec.snapshot_times_s {

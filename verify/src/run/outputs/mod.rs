@@ -1,6 +1,7 @@
 //! The standard outputs of a run, one observer per file: the time series and the final
-//! particle state (always), `.vtu` snapshots (`vtk_every`), checkpoints (`checkpoint_steps`, `checkpoint_minutes`, and on an
-//! interrupt) and the progress bar (`progress`). A new output is one file here and its option.
+//! particle state (always), `.vtu` snapshots (`vtk_every`), checkpoints (`checkpoint_steps`,
+//! `checkpoint_minutes`, and on an interrupt) and the progress bar (`progress`). A new output
+//! is one file here and its option.
 
 mod checkpoint;
 pub(crate) mod final_state;

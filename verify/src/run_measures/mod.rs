@@ -73,8 +73,13 @@ fn wall_top(scene: &solver::Scene) -> Option<f64> {
     }
 }
 
-/// The run's snapshots: `(time [s], particles)`, the walls as the particles' neighbours.
-fn snapshots(dir: &Path, scene: &solver::Scene) -> anyhow::Result<Vec<(f64, Cloud)>> {
+/// Calls `each` with the run's snapshots in turn, `(time [s], particles)` with the walls as the
+/// particles' neighbours: one in memory at a time.
+fn for_each_snapshot(
+    dir: &Path,
+    scene: &solver::Scene,
+    mut each: impl FnMut(f64, Cloud),
+) -> anyhow::Result<()> {
     let l0 = scene.discretisation.l0;
     let pvd = dir.join("particles.pvd");
     if !pvd.exists() {
@@ -87,13 +92,13 @@ fn snapshots(dir: &Path, scene: &solver::Scene) -> anyhow::Result<Vec<(f64, Clou
             );
         }
         let dump = Dump::read(&last)?.with_walls(Dump::walls_of(scene)?.as_ref());
-        return Ok(vec![(dump.time_s, dump.cloud(l0))]);
+        each(dump.time_s, dump.cloud(l0));
+        return Ok(());
     }
     let walls = match read_vtu(&dir.join("walls.vtu")) {
         Ok(w) => w.pos,
         Err(_) => Vec::new(),
     };
-    let mut out = Vec::new();
     for (t, file) in read_pvd(&pvd).map_err(anyhow::Error::msg)? {
         let s = read_vtu(&dir.join(&file)).map_err(anyhow::Error::msg)?;
         let cloud = Cloud {
@@ -102,9 +107,9 @@ fn snapshots(dir: &Path, scene: &solver::Scene) -> anyhow::Result<Vec<(f64, Clou
             walls: walls.clone(),
             l0_m: l0,
         };
-        out.push((t, cloud));
+        each(t, cloud);
     }
-    Ok(out)
+    Ok(())
 }
 
 /// Measures the run in `dir` from its `.vtu` snapshots, or at its end from its final state.
@@ -115,7 +120,7 @@ pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
     let n_liquids = scene.liquids.len();
     let gas = gases(scene);
     let mut rows = Vec::new();
-    for (t, mut cloud) in snapshots(dir, scene)? {
+    for_each_snapshot(dir, scene, |t, mut cloud| {
         cloud.retain_phases(|p| !gas[p as usize]);
         let classes = surface::classify(&cloud);
         for k in (0..n_liquids).filter(|&k| !gas[k]) {
@@ -125,7 +130,7 @@ pub fn measure(dir: &Path) -> anyhow::Result<Measures> {
                 .collect();
             rows.push(row(t, k, &pts, &cloud, &classes, z_w));
         }
-    }
+    })?;
     spreading_rates(&mut rows, n_liquids);
     Ok(Measures {
         liquids: scene.liquids.iter().map(|l| l.name.clone()).collect(),

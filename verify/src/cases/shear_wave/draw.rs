@@ -42,16 +42,31 @@ pub fn plots(runs: &[WaveRun], dir: &Path) -> anyhow::Result<()> {
         kind: SeriesKind::Dashed,
         color: 0,
     });
-    plot::draw(
-        &Plot {
-            title: "Shear wave in a periodic box: amplitude of the sin(kz) velocity mode".into(),
-            x_label: "t [ms]".into(),
-            y_label: "A(t) / A(0)".into(),
-            series,
-            x_range: None,
-            y_range: None,
-            hlines: vec![(0.0, String::new())],
-        },
-        &dir.join("amplitude"),
+    let plot = |title: &str, series: Vec<Series>, y_range: Option<(f64, f64)>, name: &str| {
+        plot::draw(
+            &Plot {
+                title: title.into(),
+                x_label: "t [ms]".into(),
+                y_label: "A(t) / A(0)".into(),
+                series,
+                x_range: None,
+                y_range,
+                hlines: vec![(0.0, String::new())],
+            },
+            &dir.join(name),
+        )
+    };
+    plot(
+        "Shear wave in a periodic box: amplitude of the sin(kz) velocity mode",
+        series.clone(),
+        None,
+        "amplitude",
+    )?;
+    // the last per cent: where a liquid's wave has decayed, what is left of the others
+    plot(
+        "Shear wave: the last per cent of the sin(kz) mode",
+        series,
+        Some((-0.05, 0.05)),
+        "amplitude_tail",
     )
 }

@@ -1,6 +1,7 @@
-//! The shear wave's metrics: per run the effective viscosity against the liquid's, the number
-//! of reversals (a liquid's: none), and for a ringing run the shear modulus it implies beside
-//! the Born modulus of the setting's reference lattice.
+//! The shear wave's metrics: per run the effective viscosity against the liquid's, from the
+//! first samples and from the whole run, the number of reversals (a liquid's: none), and for a
+//! ringing run the shear modulus it implies beside the Born modulus of the setting's reference
+//! lattice.
 
 use super::measure::{Response, WaveRun};
 use crate::cases::scene::{artificial_viscosity_m2_s, SLAG};
@@ -52,7 +53,20 @@ fn run_metrics(case: &str, m: &WaveRun) -> Vec<Metric> {
             )
             .run(m.run)
             .note(format!(
-                "{status}ν_eff = −A'(0)/(A(0) k²) = {nu_initial:.3e} m²/s (unaffected by elasticity: the strain is 0 at the start) against ν = μ/ρ = {nu_ref:.3e} m²/s (the artificial viscosity's α1 h c/10 = {nu_av:.2e} m²/s is an estimate for compressive flows); {response}"
+                "{status}ν_eff = −A'(0)/(A(0) k²) = {nu_initial:.3e} m²/s (unaffected by elasticity: the strain is 0 at the start) against ν = μ/ρ = {nu_ref:.3e} m²/s (the artificial viscosity's α1 h c/10 = {nu_av:.2e} m²/s is an estimate for compressive flows)"
+            )),
+        Metric::new(case, format!("{id}: whole-run ν / ν"), "-", whole / nu_ref)
+            .against(
+                1.0,
+                Tolerance::relative(
+                    DECAY_TARGET,
+                    1.0,
+                    "10 %: the liquid model's target for the shear wave's decay, which a liquid keeps for the whole run",
+                ),
+            )
+            .run(m.run)
+            .note(format!(
+                "{status}{response}, against ν = μ/ρ = {nu_ref:.3e} m²/s: where ν_eff reads the first samples only, this reads the decay of the whole run (a decay: ln A(t) fitted over the samples above 1 % of A(0); a ringing: the damped cosine's rate γ as 2γ/k²)"
             )),
         Metric::new(case, format!("{id}: reversals of A(t)"), "-", m.reversals as f64)
             .against(
@@ -62,6 +76,9 @@ fn run_metrics(case: &str, m: &WaveRun) -> Vec<Metric> {
             .run(m.run)
             .note(format!("{status}sign changes of the sin(kz) velocity mode above 0.1 % of its start")),
     ];
+    if let (Response::Decay { .. }, Some(late)) = (&m.response, m.late_rate_per_s) {
+        out.push(late_rate(case, m, late, m.initial_rate_per_s));
+    }
     if let (Response::Ringing(f), Some(w_el)) = (&m.response, m.response.elastic_frequency_rad_s())
     {
         out.push(
@@ -79,6 +96,39 @@ fn run_metrics(case: &str, m: &WaveRun) -> Vec<Metric> {
         out.push(shear_modulus(case, m, w_el));
     }
     out
+}
+
+/// The decay rate of a wave that stays above 1 % of its start over the run's last quarter
+/// (information: a liquid's decays at `ν k²` into the noise), with the Kelvin–Voigt modulus its
+/// slow root implies. Such a medium, `A'' + ν k² A' + (G k²/ρ) A = 0` started at zero strain,
+/// has the rates `s_f`, `s_s` of its two roots add up to `ν k²` (the initial rate) and multiply
+/// to `G k²/ρ`, so the slow one gives `G = ρ s_s (ν k² − s_s)/k²`. A positive `G` makes `A`
+/// reverse (a ringing, or an overdamped swing through zero); a wave that neither reverses nor
+/// decays into the noise has a growing slow root (`s_s < 0`), a negative `G`: the medium drives
+/// the shear on.
+fn late_rate(case: &str, m: &WaveRun, late: f64, initial: f64) -> Metric {
+    let scene = &m.run.info.scene;
+    let unit = SLAG.surface_tension_n_m / scene.discretisation.l0;
+    let k2 = m.k_per_m * m.k_per_m;
+    let g_pa = SLAG.density_kg_m3 * late * (initial - late) / k2;
+    Metric::new(
+        case,
+        format!("{}: late decay rate of A(t)", m.run.id),
+        "1/s",
+        late,
+    )
+    .run(m.run)
+    .note(format!(
+        "{}ln A(t) over the run's last quarter, where A stays above 1 % of A(0); a liquid's: ν k² = {:.0} 1/s, fallen into the noise by then. As the slow root of a Kelvin–Voigt medium with the initial rate {initial:.0} 1/s: G = ρ s_s (ν k² − s_s)/k² = {g_pa:.3} Pa = {:.2e} σ/l0{}",
+        m.run.status_note(),
+        reference_viscosity_m2_s(m).0 * k2,
+        g_pa / unit,
+        if late < 0.0 {
+            " (negative: the wave grows back, the medium drives the shear on)"
+        } else {
+            ""
+        }
+    ))
 }
 
 /// The shear modulus `G = ρ ω_el²/k²` a ringing run implies, in σ/l0, beside the Born `G44`

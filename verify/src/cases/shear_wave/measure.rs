@@ -131,13 +131,18 @@ pub fn decay_rate(t: &[f64], a: &[f64]) -> Result<f64, String> {
 }
 
 /// The decay rate [1/s] of `A ∝ exp(−γt)` over the last quarter of the samples, if every one of
-/// them is above 1 % of `A(0)` (None otherwise: the mode has decayed into the noise, or
-/// reversed).
-pub fn late_rate(t: &[f64], a: &[f64]) -> Option<f64> {
+/// them is above 1 % of `A(0)` and a decay at `initial_rate_per_s` [1/s] would have fallen
+/// below 1e-3 of `A(0)` before it (None otherwise: the mode has decayed into the noise or
+/// reversed, or the run is too short to tell a slow root from the initial decay).
+pub fn late_rate(t: &[f64], a: &[f64], initial_rate_per_s: f64) -> Option<f64> {
     let n = t.len().min(a.len());
     let a0 = *a.first()?;
+    if n < 8 || a0 <= 0.0 {
+        return None;
+    }
     let from = n - n / 4;
-    if n < 8 || a0 <= 0.0 || a[from..n].iter().any(|&x| x <= 0.01 * a0) {
+    let fast_root_left = (-initial_rate_per_s * (t[from] - t[0])).exp();
+    if !(fast_root_left < 1e-3) || a[from..n].iter().any(|&x| x <= 0.01 * a0) {
         return None;
     }
     decay_rate(&t[from..n], &a[from..n]).ok()
@@ -153,6 +158,7 @@ pub fn wave_run(run: &RunData) -> WaveRun<'_> {
     let n = t.len().min(a.len());
     let (t, a) = (t[..n].to_vec(), a[..n].to_vec());
     let rev = reversals(&a);
+    let initial = initial_rate(&t, &a);
     let response = if n < 8 {
         Response::Unmeasured(format!("{n} samples"))
     } else if rev == 0 {
@@ -168,9 +174,9 @@ pub fn wave_run(run: &RunData) -> WaveRun<'_> {
     };
     WaveRun {
         run,
-        late_rate_per_s: late_rate(&t, &a),
+        late_rate_per_s: late_rate(&t, &a, initial),
         k_per_m: std::f64::consts::TAU / BOX_M,
-        initial_rate_per_s: initial_rate(&t, &a),
+        initial_rate_per_s: initial,
         t_s: t,
         amplitude_m_s: a,
         reversals: rev,
@@ -215,11 +221,14 @@ mod tests {
                 .map(|&t| c * (s * t).exp() + (1.0 - c) * (-(nuk2 + s) * t).exp())
                 .collect()
         };
-        let late = late_rate(&t, &curve(4.7)).unwrap();
+        let late = late_rate(&t, &curve(4.7), nuk2).unwrap();
         assert!((late + 4.7).abs() < 0.02 * 4.7, "late rate {late}");
-        assert_eq!(late_rate(&t, &curve(-4.7)), None);
+        assert_eq!(late_rate(&t, &curve(-4.7), nuk2), None);
+        // the same curve cut at 2 ms: its last quarter still holds the fast root (e^{−440·1.5e-3}
+        // = 0.52 of A(0)), so no slow root is read
+        assert_eq!(late_rate(&t[..41], &curve(4.7)[..41], nuk2), None);
         let liquid: Vec<f64> = t.iter().map(|&t| (-nuk2 * t).exp()).collect();
-        assert_eq!(late_rate(&t, &liquid), None);
+        assert_eq!(late_rate(&t, &liquid, nuk2), None);
     }
 
     #[test]

@@ -2,6 +2,7 @@
 //! particle system is from a liquid.
 
 pub mod curvature;
+pub mod interface_shear;
 pub mod lattice_moduli;
 pub mod mode_stiffness;
 pub mod slab_tension;

@@ -1,0 +1,116 @@
+//! The stiffness a capillarity model gives a flat interface against sliding along it,
+//! measured statically on the lattice: a liquid's interface has none.
+//!
+//! Two slabs of different liquids fill a cube of `n` spacings, periodic along x, y and z
+//! (lattice units: l0 = 1 m, unit volumes, σ12 = 1 N/m), the interfaces at `z = 0` and
+//! `z = n/2`. Every particle moves along x by `u(z) = D sin(kz)`, `k = 2π/n`: the displacement
+//! of the `shear_wave` case's velocity mode, whose shear is largest on the interfaces. The
+//! model's generalised force on that path is `Q(D) = Σ_i F_x,i sin(k z_i)`; a medium of shear
+//! modulus `G` has the energy `½ G ∫ u'² dV = ¼ G k² V D²`, so
+//! `G = −(Q(D) − Q(−D))/(2D) · 2/(k² V)` [σ/l0] (the central difference cancels the
+//! undeformed lattice's own residual). A liquid has `G = 0`; a negative `G` drives the
+//! sliding on. The layers can be paired first (`pairing`: layer `m` moved along z by
+//! `±pairing` spacings, `+` for even `m`), as the case's run under the surface force leaves
+//! them.
+
+use solver::kernel::{Kernel, WendlandC2};
+use solver::neighbours::NeighbourSearch;
+use solver::periodic::PeriodicBox;
+use solver::physics::surface_tension::surface_force::{ForceScratch, Walls};
+use solver::physics::surface_tension::surface_stress::StressInput;
+use solver::state::Vec3;
+
+/// The generalised force `Q(D)` [N] of the surface force (colour kernel's support
+/// `re_over_l0`) on the two-slab cube of `n` spacings, its layers paired by `pairing` and
+/// sheared by `d_over_l0` spacings.
+fn generalised_force(n: usize, re_over_l0: f64, d_over_l0: f64, pairing: f64) -> f64 {
+    let side = n as f64;
+    let k = std::f64::consts::TAU / side;
+    let sites: Vec<Vec3> = (0..n * n * n)
+        .map(|s| {
+            Vec3::new(
+                (s % n) as f64 + 0.5,
+                (s / n % n) as f64 + 0.5,
+                (s / (n * n)) as f64 + 0.5,
+            )
+        })
+        .collect();
+    let moved: Vec<Vec3> = sites
+        .iter()
+        .map(|x| {
+            let layer = (x.z - 0.5) as usize;
+            let dz = if layer % 2 == 0 { pairing } else { -pairing };
+            let mut p = *x + Vec3::new(d_over_l0 * (k * x.z).sin(), 0.0, dz);
+            p.x = p.x.rem_euclid(side);
+            p
+        })
+        .collect();
+    let mut search = NeighbourSearch::new(2.0, re_over_l0, 0.3);
+    search.set_periodic(PeriodicBox::new([Some([0.0, side]); 3]));
+    let order = search
+        .sort_order(&moved)
+        .expect("the cube fits the cell grid");
+    let pos: Vec<Vec3> = order.iter().map(|&i| moved[i as usize]).collect();
+    let reference: Vec<Vec3> = order.iter().map(|&i| sites[i as usize]).collect();
+    search
+        .build(&pos, pos.len())
+        .expect("the cube fits the cell grid");
+    let phase: Vec<u8> = reference
+        .iter()
+        .map(|x| u8::from(x.z > 0.5 * side))
+        .collect();
+    let vol = vec![1.0; pos.len()];
+    let input = StressInput {
+        kernel: WendlandC2::new(re_over_l0 / 2.0),
+        pos: &pos,
+        vol: &vol,
+        phase: &phase,
+        n_fluid: pos.len(),
+        lists: &search.lists,
+    };
+    let mut s = ForceScratch::default();
+    s.evaluate(
+        &input,
+        2,
+        |a, b| if a != b { 1.0 } else { 0.0 },
+        Walls::Absent,
+    );
+    s.force
+        .iter()
+        .zip(&reference)
+        .map(|(f, x)| f.x * (k * x.z).sin())
+        .sum()
+}
+
+/// The shear modulus [σ/l0] the surface force gives the two-slab cube of `n` spacings (colour
+/// kernel's support `re_over_l0`, layers paired by `pairing` spacings), from a shear of
+/// amplitude `d_over_l0` spacings.
+pub fn surface_force_shear_modulus(n: usize, re_over_l0: f64, d_over_l0: f64, pairing: f64) -> f64 {
+    let q = |d| generalised_force(n, re_over_l0, d, pairing);
+    let stiffness = -(q(d_over_l0) - q(-d_over_l0)) / (2.0 * d_over_l0);
+    let side = n as f64;
+    let k = std::f64::consts::TAU / side;
+    2.0 * stiffness / (k * k * side.powi(3))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sheared_flat_interface_is_nearly_free_under_the_surface_force() {
+        // The shear_wave case's box (16 spacings) and colour kernel (r_e = 4.2 l0). Measured:
+        // G = +1.07e-5 σ/l0 at D = 0.005 and 0.02 l0 (linear to 0.5 %), +1.26e-5 and +0.87e-5
+        // with the layers paired by +0.0075 and −0.0075 l0 (the run's pairing at 40 ms). The
+        // case's run under the surface force decays as a medium of G = −2.4e-4 σ/l0 would
+        // (its wave grows back, docs/findings.md): asserted, that the static force on the
+        // sheared lattice is positive and below a tenth of that, so it is not what drives it.
+        for pairing in [0.0, 0.0075, -0.0075] {
+            for d in [0.005, 0.02] {
+                let g = surface_force_shear_modulus(16, 4.2, d, pairing);
+                println!("pairing {pairing} l0, D = {d} l0: G = {g:.3e} σ/l0");
+                assert!(g > 0.0 && g < 2.4e-5, "pairing {pairing}, D {d}: G = {g}");
+            }
+        }
+    }
+}

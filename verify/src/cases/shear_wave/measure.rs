@@ -141,8 +141,9 @@ pub fn late_rate(t: &[f64], a: &[f64], initial_rate_per_s: f64) -> Option<f64> {
         return None;
     }
     let from = n - n / 4;
-    let fast_root_left = (-initial_rate_per_s * (t[from] - t[0])).exp();
-    if !(fast_root_left < 1e-3) || a[from..n].iter().any(|&x| x <= 0.01 * a0) {
+    // the initial decay's leftover at the window's start; NaN (no initial rate) reads none
+    let fast_root_died = (-initial_rate_per_s * (t[from] - t[0])).exp() < 1e-3;
+    if !fast_root_died || a[from..n].iter().any(|&x| x <= 0.01 * a0) {
         return None;
     }
     decay_rate(&t[from..n], &a[from..n]).ok()

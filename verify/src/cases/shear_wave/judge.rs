@@ -1,7 +1,8 @@
 //! The shear wave's metrics: per run the effective viscosity against the liquid's, from the
-//! first samples and from the whole run, the number of reversals (a liquid's: none), and for a
+//! first samples and from the whole run, the number of reversals (a liquid's: none), for a
 //! ringing run the shear modulus it implies beside the Born modulus of the setting's reference
-//! lattice.
+//! lattice, and for a wave that neither reverses nor decays into the noise the rate left over
+//! the last quarter with the modulus it implies.
 
 use super::measure::{Response, WaveRun};
 use crate::cases::scene::{artificial_viscosity_m2_s, SLAG};

@@ -27,8 +27,9 @@
 //! (docs/model.md §4b, at its own `h/l0`). The flow is parallel to the interfaces and its
 //! shear is largest on them; flat interfaces stay flat, so a liquid pair's wave is the single
 //! liquid's, `exp(−ν k² t)` without a reversal: an interface that resists shear, or
-//! a tension model whose forces do not vanish on a flat sheared interface, shows as ringing
-//! or as a ν_eff off μ/ρ.
+//! a tension model whose forces do not vanish on a flat sheared interface, shows as ringing,
+//! as a ν_eff off μ/ρ, or as a wave that does not decay away (the whole run's decay, and the
+//! rate left over the last quarter read as a Kelvin–Voigt modulus).
 
 mod draw;
 mod judge;

@@ -13,8 +13,8 @@
 //! `±pairing` spacings, `+` for even `m`), as the case's run under the surface force leaves
 //! them.
 
+use super::sphere_cloud::searched;
 use solver::kernel::{Kernel, WendlandC2};
-use solver::neighbours::NeighbourSearch;
 use solver::periodic::PeriodicBox;
 use solver::physics::surface_tension::surface_force::{ForceScratch, Walls};
 use solver::physics::surface_tension::surface_stress::StressInput;
@@ -45,16 +45,8 @@ fn generalised_force(n: usize, re_over_l0: f64, d_over_l0: f64, pairing: f64) ->
             p
         })
         .collect();
-    let mut search = NeighbourSearch::new(2.0, re_over_l0, 0.3);
-    search.set_periodic(PeriodicBox::new([Some([0.0, side]); 3]));
-    let order = search
-        .sort_order(&moved)
-        .expect("the cube fits the cell grid");
-    let pos: Vec<Vec3> = order.iter().map(|&i| moved[i as usize]).collect();
-    let reference: Vec<Vec3> = order.iter().map(|&i| sites[i as usize]).collect();
-    search
-        .build(&pos, pos.len())
-        .expect("the cube fits the cell grid");
+    let periodic = PeriodicBox::new([Some([0.0, side]); 3]);
+    let (pos, reference, search) = searched(&moved, &sites, re_over_l0, periodic);
     let phase: Vec<u8> = reference
         .iter()
         .map(|x| u8::from(x.z > 0.5 * side))

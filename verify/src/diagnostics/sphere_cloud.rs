@@ -23,6 +23,28 @@ pub struct SphereCloud {
     re_over_l0: f64,
 }
 
+/// The particles at `moved` [l0] in neighbour-search order with their lists built (near radius
+/// 2 l0, far `re_over_l0`, skin 0.3 l0, periodic as `periodic` says), and `reference` (one
+/// entry per particle) in the same order: `(positions, references, search)`.
+pub(super) fn searched(
+    moved: &[Vec3],
+    reference: &[Vec3],
+    re_over_l0: f64,
+    periodic: PeriodicBox,
+) -> (Vec<Vec3>, Vec<Vec3>, NeighbourSearch) {
+    let mut search = NeighbourSearch::new(2.0, re_over_l0, 0.3);
+    search.set_periodic(periodic);
+    let order = search
+        .sort_order(moved)
+        .expect("the cloud fits the cell grid");
+    let pos: Vec<Vec3> = order.iter().map(|&i| moved[i as usize]).collect();
+    let reference = order.iter().map(|&i| reference[i as usize]).collect();
+    search
+        .build(&pos, pos.len())
+        .expect("the cloud fits the cell grid");
+    (pos, reference, search)
+}
+
 impl SphereCloud {
     /// The sphere of `r_over_l0` spacings, in a cube that reaches the colour kernel's support
     /// `re_over_l0` beyond it and two spacings more, jittered by up to `±jitter_over_l0`
@@ -55,16 +77,7 @@ impl SphereCloud {
             .iter()
             .map(|&x| centre + x + displacement(x))
             .collect();
-        let mut search = NeighbourSearch::new(2.0, re_over_l0, 0.3);
-        search.set_periodic(PeriodicBox::OPEN);
-        let order = search
-            .sort_order(&moved)
-            .expect("the cloud fits the cell grid");
-        let pos: Vec<Vec3> = order.iter().map(|&i| moved[i as usize]).collect();
-        let reference: Vec<Vec3> = order.iter().map(|&i| reference[i as usize]).collect();
-        search
-            .build(&pos, pos.len())
-            .expect("the cloud fits the cell grid");
+        let (pos, reference, search) = searched(&moved, &reference, re_over_l0, PeriodicBox::OPEN);
         let phase = reference
             .iter()
             .map(|x| u8::from(x.norm() < r_over_l0))

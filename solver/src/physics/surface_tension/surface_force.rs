@@ -12,7 +12,8 @@
 //! - where `|g_i| > 0.01/r_e` (the band: nearly all of the colour kernel's reach), the normal
 //!   `n_i = g_i/|g_i|` and the curvature
 //!   `κ_i = −Σ_j V_j (n_j − n_i)·∇_i W_c / Σ_j V_j ½(r² − (n_i·r_ij)²) |W_c'|/r`
-//!   over band neighbours `j` of `a` or `b`: the divergence of `n` with the kernel's moment in
+//!   over band neighbours `j` of `a` or `b` whose normals are within 120° of `n_i` (a film's
+//!   opposite face is no neighbour): the divergence of `n` with the kernel's moment in
 //!   the tangent plane as its normalisation (the band truncates the moment along `n`, along
 //!   which `n` does not change), positive for a drop of `b` in `a`;
 //! - the force `F_i = V_i σ_ab κ_i g_i` [N].
@@ -49,6 +50,11 @@ use wall_normal::WallNormal;
 /// falls (+8.7, +4.6, +2.8 %; docs/findings.md). Only isolated particles at the colour
 /// kernel's edge, whose normals are noise, stay out.
 pub const BAND_GRADIENT_TIMES_R_E: f64 = 0.01;
+
+/// The cosine below which two band particles' normals are taken for opposite faces of a film
+/// and left out of each other's curvature [-]: normals more than 120° apart. A 90° fold's
+/// normals, perpendicular up to round-off, stay in (docs/model.md §4b, *Opposite faces*).
+pub const OPPOSITE_FACES_COSINE: f64 = -0.5;
 
 /// Scratch of the surface force, kept between steps.
 #[derive(Clone, Debug)]
@@ -541,6 +547,12 @@ fn curvature_sums<K: Kernel>(
         }
         let mut add = |j: usize, grad_w: Vec3, d: Vec3| {
             let nj = normal[j];
+            // a neighbour whose normal is more than 120° from i's is on another face of a
+            // film thinner than the colour kernel, not on i's interface (docs/model.md §4b,
+            // *Opposite faces*)
+            if ni.dot(&nj) < OPPOSITE_FACES_COSINE {
+                return;
+            }
             // grad_w = ∇_i W_c = r_ij W'/r, with d = r_ij = x_i − x_j
             let div = (nj - ni).dot(&grad_w);
             let r2 = d.norm_squared();

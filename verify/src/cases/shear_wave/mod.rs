@@ -116,8 +116,9 @@ fn design(f: Fidelity) -> (usize, f64) {
         // seventeen viscous decay times 1/(ν k²) of slag in this box (2.3 ms), four periods of
         // the ringing at the Born modulus: a liquid's wave is below 1 % of its start from
         // 10.5 ms on, and the last quarter (30–40 ms) reads a slow root if one is there, the
-        // fast root's leftover 1.6e-6 of the start (the surface force's interfaces hold the
-        // wave at about 1 % from 18 ms on, docs/findings.md)
+        // fast root's leftover 1.6e-6 of the start (the surface force's slabs, thinner than
+        // its colour kernel's reach, held the wave at about 1 % from 18 ms on until a film's
+        // opposite faces were left out of the curvature, docs/findings.md)
         Fidelity::Standard => (16, 40e-3),
         Fidelity::Paper => (24, 40e-3),
     }

@@ -9,9 +9,10 @@
 //! modulus `G` has the energy `½ G ∫ u'² dV = ¼ G k² V D²`, so
 //! `G = −(Q(D) − Q(−D))/(2D) · 2/(k² V)` [σ/l0] (the central difference cancels the
 //! undeformed lattice's own residual). A liquid has `G = 0`, as the surface force now gives
-//! (to round-off); a negative `G` would drive the sliding on. The layers can be paired first (`pairing`: layer `m` moved along z by
-//! `±pairing` spacings, `+` for even `m`), as the case's run under the surface force leaves
-//! them.
+//! (to round-off); a negative `G` would drive the sliding on. The layers can be paired first
+//! (`pairing`: layer `m` moved along z by `±pairing` spacings, `+` for even `m`), as the
+//! case's run under the surface force left them before a film's opposite faces were left out
+//! of its curvature.
 
 use super::sphere_cloud::searched;
 use solver::kernel::{Kernel, WendlandC2};
@@ -97,8 +98,8 @@ mod tests {
         // +1.26e-5 and +0.87e-5 with the layers paired by ±0.0075 l0: the slabs' two faces,
         // within the colour kernel of each other, made their middles folds. Now it reads
         // 1e-14 to 3e-13 σ/l0, the central difference's round-off; bound 1e-10, five
-        // decades below what the opposite faces gave and a thousand times the measured
-        // round-off
+        // decades below what the opposite faces gave and over 300 times the largest
+        // round-off measured
         for (pairing, d) in [(0.0, 0.005), (0.0, 0.02), (0.0075, 0.02), (-0.0075, 0.02)] {
             let g = surface_force_shear_modulus(16, 4.2, d, pairing);
             println!("pairing {pairing} l0, D = {d} l0: G = {g:.3e} σ/l0");

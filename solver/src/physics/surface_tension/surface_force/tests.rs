@@ -19,22 +19,37 @@ fn evaluate(c: &Cloud) -> ForceScratch {
     s
 }
 
-#[test]
-fn a_flat_interface_has_no_curvature_and_no_force() {
-    // 10 × 10 × 20 periodic box: phase 0 below z = 10 l0, phase 1 above (two interfaces)
+/// The surface force on a lattice of `nz` layers of 10 × 10 sites, periodic along x, y and z,
+/// with phase 1 where `z` is in `layer` [m] and phase 0 elsewhere (two flat interfaces).
+fn flat_layer(nz: usize, layer: [f64; 2]) -> ForceScratch {
     let b = PeriodicBox::new([
         Some([0.0, 10.0 * L0]),
         Some([0.0, 10.0 * L0]),
-        Some([0.0, 20.0 * L0]),
+        Some([0.0, nz as f64 * L0]),
     ]);
-    let c = cloud(lattice([10, 10, 20]), |x| u8::from(x.z > 10.0 * L0), b);
-    let s = evaluate(&c);
-    // every band particle's normal is +z up to the round-off of its gradient's lattice sum
-    // (~10² terms of unit size), so n_j − n_i, the curvature and the force are round-off
+    let c = cloud(
+        lattice([10, 10, nz]),
+        |x| u8::from(x.z > layer[0] && x.z < layer[1]),
+        b,
+    );
+    evaluate(&c)
+}
+
+/// Asserts that every curvature and force of `s` is round-off: every band particle's normal
+/// is ±z up to the round-off of its gradient's lattice sum (~10² terms of unit size), so
+/// `n_j − n_i`, the curvature and the force are round-off.
+fn assert_flat(s: &ForceScratch, what: &str) {
     let kappa_max = s.curvature.iter().fold(0.0f64, |m, k| m.max(k.abs()));
-    assert!(kappa_max * L0 < 1e-12, "κ l0 = {kappa_max:e}");
+    assert!(kappa_max * L0 < 1e-12, "{what}: κ l0 = {kappa_max:e}");
     let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
-    assert!(force_max < 1e-12 * SIGMA * L0, "{force_max:e} N");
+    assert!(force_max < 1e-12 * SIGMA * L0, "{what}: {force_max:e} N");
+}
+
+#[test]
+fn a_flat_interface_has_no_curvature_and_no_force() {
+    // 10 × 10 × 20 periodic box: phase 0 below z = 10 l0, phase 1 above (two interfaces)
+    let s = flat_layer(20, [10.0 * L0, 20.0 * L0]);
+    assert_flat(&s, "flat");
     // the energy estimate: σ per area of interface, up to the colour kernel's lattice moment
     // (the surface stress's flat test: 1.0004 at h_c = 2.1 l0); round-off of ~10⁴ terms
     let area = 100.0 * L0 * L0;
@@ -51,28 +66,9 @@ fn a_film_thinner_than_the_colour_kernel_has_no_curvature_and_no_force() {
     // wave's 8 l0 slabs showed as every layer kicked along z, alternately (docs/findings.md).
     // The curvature's sums leave out neighbours whose normals are more than 120° apart; the
     // rest share the normal ±z up to round-off (as in the flat test above)
-    let b = PeriodicBox::new([
-        Some([0.0, 10.0 * L0]),
-        Some([0.0, 10.0 * L0]),
-        Some([0.0, 24.0 * L0]),
-    ]);
     for thickness in [2.0, 4.0, 6.0, 8.0] {
-        let c = cloud(
-            lattice([10, 10, 24]),
-            |x| u8::from(x.z > 8.0 * L0 && x.z < (8.0 + thickness) * L0),
-            b,
-        );
-        let s = evaluate(&c);
-        let kappa_max = s.curvature.iter().fold(0.0f64, |m, k| m.max(k.abs()));
-        assert!(
-            kappa_max * L0 < 1e-12,
-            "{thickness} l0: κ l0 = {kappa_max:e}"
-        );
-        let force_max = s.force.iter().fold(0.0f64, |m, f| m.max(f.norm()));
-        assert!(
-            force_max < 1e-12 * SIGMA * L0,
-            "{thickness} l0: {force_max:e} N"
-        );
+        let s = flat_layer(24, [8.0 * L0, (8.0 + thickness) * L0]);
+        assert_flat(&s, &format!("{thickness} l0"));
     }
 }
 

@@ -639,41 +639,13 @@ pub fn solid_liquid_liquid_angle(
     classes: &Classes,
     wall_z_m: f64,
 ) -> Result<f64, String> {
-    check_cloud(cloud)?;
-    check_classes(cloud, classes)?;
-    if !wall_z_m.is_finite() {
-        return Err(format!("wall height {wall_z_m} m is not finite"));
-    }
-    let band = WALL_INTERFACE_BAND_L0 * cloud.l0_m;
-    let pairs: Vec<[u32; 2]> = unlike_pairs(cloud, classes, 0, 1)?
-        .into_iter()
-        .filter(|&[i, j]| {
-            let h = 0.5 * (cloud.pos[i as usize][2] + cloud.pos[j as usize][2]) - wall_z_m;
-            h > 0.0 && h <= band
-        })
-        .collect();
-    if pairs.len() < MIN_FIT_POINTS {
-        return Err(format!(
-            "liquid/liquid angle on the wall: only {} 1–2 interface points within \
-             {WALL_INTERFACE_BAND_L0} l0 of the wall (need {MIN_FIT_POINTS})",
-            pairs.len()
-        ));
-    }
+    let WallBand {
+        pairs,
+        mid,
+        centre,
+        normal: n,
+    } = wall_band(cloud, classes, wall_z_m, WALL_INTERFACE_BAND_L0)?;
     let side = |k: u32| Vector3::from(cloud.pos[k as usize]);
-    let mid: Vec<[f64; 3]> = pairs
-        .iter()
-        .map(|&[i, j]| midpoint(cloud.pos[i as usize], cloud.pos[j as usize]))
-        .collect();
-    // Plane: normal oriented from liquid 1 into liquid 2 (the mean pair vector).
-    let across = pairs
-        .iter()
-        .fold(Vector3::zeros(), |a, &[i, j]| a + side(j) - side(i));
-    let (centre, normal) = fit_plane(&mid)?;
-    let n = if normal.dot(&across) >= 0.0 {
-        normal
-    } else {
-        -normal
-    };
     let theta_plane = n[2].clamp(-1.0, 1.0).acos().to_degrees();
     let rms_plane = (mid
         .iter()
@@ -711,6 +683,71 @@ pub fn solid_liquid_liquid_angle(
         cap
     } else {
         180.0 - cap
+    })
+}
+
+/// The 1–2 interface of a two-liquid cloud in a band above a horizontal wall, and the plane
+/// fitted through it.
+pub(crate) struct WallBand {
+    /// Unlike pairs (liquid 1, liquid 2) whose midpoints lie in the band.
+    pub pairs: Vec<[u32; 2]>,
+    /// Their midpoints (m).
+    pub mid: Vec<[f64; 3]>,
+    /// Centroid of the midpoints (m).
+    pub centre: Vector3<f64>,
+    /// Unit normal of the plane fitted through the midpoints, from liquid 1 into liquid 2 (the
+    /// mean pair vector's side).
+    pub normal: Vector3<f64>,
+}
+
+/// [`WallBand`] of `cloud` in the band `band_l0` spacings high above the wall surface
+/// `z = wall_z_m` (m). Err on an invalid cloud, classes not of this cloud, a non-finite
+/// `wall_z_m`, fewer than 10 interface points in the band, or a degenerate plane.
+pub(crate) fn wall_band(
+    cloud: &Cloud,
+    classes: &Classes,
+    wall_z_m: f64,
+    band_l0: f64,
+) -> Result<WallBand, String> {
+    check_cloud(cloud)?;
+    check_classes(cloud, classes)?;
+    if !wall_z_m.is_finite() {
+        return Err(format!("wall height {wall_z_m} m is not finite"));
+    }
+    let band = band_l0 * cloud.l0_m;
+    let pairs: Vec<[u32; 2]> = unlike_pairs(cloud, classes, 0, 1)?
+        .into_iter()
+        .filter(|&[i, j]| {
+            let h = 0.5 * (cloud.pos[i as usize][2] + cloud.pos[j as usize][2]) - wall_z_m;
+            h > 0.0 && h <= band
+        })
+        .collect();
+    if pairs.len() < MIN_FIT_POINTS {
+        return Err(format!(
+            "liquid/liquid angle on the wall: only {} 1–2 interface points within \
+             {band_l0} l0 of the wall (need {MIN_FIT_POINTS})",
+            pairs.len()
+        ));
+    }
+    let side = |k: u32| Vector3::from(cloud.pos[k as usize]);
+    let mid: Vec<[f64; 3]> = pairs
+        .iter()
+        .map(|&[i, j]| midpoint(cloud.pos[i as usize], cloud.pos[j as usize]))
+        .collect();
+    let across = pairs
+        .iter()
+        .fold(Vector3::zeros(), |a, &[i, j]| a + side(j) - side(i));
+    let (centre, normal) = fit_plane(&mid)?;
+    let normal = if normal.dot(&across) >= 0.0 {
+        normal
+    } else {
+        -normal
+    };
+    Ok(WallBand {
+        pairs,
+        mid,
+        centre,
+        normal,
     })
 }
 

@@ -2,6 +2,7 @@
 
 pub mod convergence;
 pub mod fit;
+pub mod foot;
 pub mod geometry;
 pub mod invariants;
 pub mod oscillation;

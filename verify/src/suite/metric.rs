@@ -132,20 +132,27 @@ impl Metric {
     /// With an analytic reference, judged where the measurement has an error bound
     /// (`Some`); where it has none the reference stands beside the value, unjudged, and the
     /// note says why. Call it after [`Metric::note`], which replaces the note.
-    pub fn against_if(mut self, reference: f64, tolerance: Option<Tolerance>) -> Self {
+    pub fn against_if(self, reference: f64, tolerance: Option<Tolerance>) -> Self {
         match tolerance {
             Some(t) => self.against(reference, t),
-            None => {
-                self.reference = Some(reference);
-                let why = "no error bound of the measurement at this resolution: not judged";
-                self.note = if self.note.is_empty() {
-                    why.to_string()
-                } else {
-                    format!("{}; {why}", self.note)
-                };
-                self
-            }
+            None => self.beside(
+                reference,
+                "no error bound of the measurement at this resolution",
+            ),
         }
+    }
+
+    /// With an analytic reference beside the value, not judged, the note ending with `why`.
+    /// Call it after [`Metric::note`], which replaces the note.
+    pub fn beside(mut self, reference: f64, why: &str) -> Self {
+        self.reference = Some(reference);
+        let why = format!("{why}: not judged");
+        self.note = if self.note.is_empty() {
+            why
+        } else {
+            format!("{}; {why}", self.note)
+        };
+        self
     }
 
     /// With the paper's own value.

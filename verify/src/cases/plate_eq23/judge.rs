@@ -6,7 +6,7 @@
 use super::measure::{Measured, PlateRun, SingleRun};
 use super::{Prediction, SIGMA12};
 use crate::analytic::eq23;
-use crate::measure::geometry;
+use crate::measure::{foot, geometry};
 use crate::suite::{Metric, Tolerance};
 
 /// The tolerance of θ12 at a solid/liquid/liquid line [deg] for a drop of `r_over_l0`
@@ -87,6 +87,10 @@ impl Judge<'_> {
             );
             out.extend(self.against_ingredients(b, m, value, theta12_ref));
         }
+        if let (Some(theta12_ref), Some(foot)) = (prediction.line_to_measure(), &b.foot_theta12_deg)
+        {
+            out.push(self.at_the_foot(b, foot, theta12_ref));
+        }
         out.push(
             Metric::new(
                 self.case,
@@ -108,6 +112,25 @@ impl Judge<'_> {
             .note("speed of the drop's centre of mass along the plate, mean over the last quarter of the run: Eq. 23 describes a drop at rest, and on a free-slip plate a drop that moves was set moving by forces that do not conserve momentum (docs/findings.md)"),
         );
         Ok(out)
+    }
+
+    /// θ12 read at the foot of the 1–2 interface (a quadric through the interface near the
+    /// plate, measure::foot) beside Eq. 23 from the typed angles, not judged: the reading is
+    /// free of the line fit's bias on a bent interface, but at the resolutions the case runs
+    /// it scatters with the lattice by more than the θ12 tolerance (its note gives the bound).
+    fn at_the_foot(&self, b: &PlateRun, foot: &Result<f64, String>, typed_theta12: f64) -> Metric {
+        let name = format!("θ12 at the foot {}", b.run.id);
+        let value = *foot.as_ref().unwrap_or(&f64::NAN);
+        let why = match foot::foot_angle_error_deg(self.r_over_l0) {
+            Some(e) => format!("its error on voxelised sheets (planes, spheres, saddles) at R/l0 = {:.0} reaches {e}° either way (measure::foot tests), more than θ12's tolerance", self.r_over_l0),
+            None => format!("no error bound of the reading at R/l0 = {:.0}", self.r_over_l0),
+        };
+        let metric = Metric::new(self.case, name, "deg", value).run(b.run);
+        let note = match foot {
+            Ok(_) => "quadric through the 1–2 interface within 12 l0 of the plate, its slope at the plate (measure::foot); reference: Eq. 23 from the typed Young angles".to_string(),
+            Err(e) => format!("not read: {e}"),
+        };
+        metric.note(note).beside(typed_theta12, &why)
     }
 
     /// θ12 against Eq. 23 evaluated at the Young angles the single drops of the same model

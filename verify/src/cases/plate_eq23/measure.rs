@@ -4,6 +4,7 @@
 
 use super::Prediction;
 use crate::cases::substrate::tail_stats;
+use crate::measure::foot;
 use crate::measure::geometry::{self, WallContact};
 use crate::measure::surface;
 use crate::output::timeseries::{Axis, LiquidColumn, RunColumn};
@@ -28,6 +29,9 @@ pub struct PlateRun<'r> {
     /// θ12 inside liquid 1 at the line [deg], where Eq. 23 has a line off its boundary, or why
     /// it could not be measured.
     pub theta12_deg: Option<Result<f64, String>>,
+    /// θ12 at the foot of the 1–2 interface [deg] ([`foot::foot_angle_deg`]), where Eq. 23 has
+    /// a line off its boundary, or why it could not be read (a lens or a layer).
+    pub foot_theta12_deg: Option<Result<f64, String>>,
     /// The drop's speed along the plate over the run's last quarter [m/s]: its two liquids'
     /// centre of mass, whose velocity the time series holds per liquid ([`drift_m_s`]).
     pub drift_m_s: f64,
@@ -139,6 +143,9 @@ pub fn plate_run(run: &RunData, l0_m: f64) -> anyhow::Result<PlateRun<'_>> {
         theta12_deg: prediction
             .line_to_measure()
             .map(|_| geometry::solid_liquid_liquid_angle(&cloud, &classes, 0.0)),
+        foot_theta12_deg: prediction
+            .line_to_measure()
+            .map(|_| foot::foot_angle_deg(&cloud, &classes, 0.0)),
         contact,
         drift_m_s: drift_m_s(run),
     })

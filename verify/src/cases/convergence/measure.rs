@@ -65,6 +65,15 @@ pub struct DropPoint<'r> {
     /// R/l0 = 10 to 20), and the difference form of the pressure force to its discretisation
     /// error (2.0e-3 at R/l0 = 10).
     pub momentum_drift: f64,
+    /// The energy budget's secular trend from [`FIT_FROM_S`] on [W]: the slope of the
+    /// budget (every energy plus everything dissipated) through its swing at half the
+    /// reference period ([`invariants::secular_trend`]). Zero where every force derives from
+    /// the energy the budget counts and the integrator keeps it; positive where the forces
+    /// put in energy that the budget's interfacial energy does not give up.
+    pub energy_trend_w: f64,
+    /// The drop's initial oscillation energy [J]: its interfacial energy at release less the
+    /// mean over the run's second half, about which the oscillation decays.
+    pub oscillation_energy_j: f64,
 }
 
 /// A cap at one angle and resolution.
@@ -283,6 +292,12 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         .sum();
     let speed_m_s =
         (run.timeseries.run_column(RunColumn::MaxSpeed).into_iter()).fold(0.0, f64::max);
+    let budget = run.timeseries.run_column(RunColumn::EnergyBalance);
+    let interfacial = run.timeseries.run_column(RunColumn::InterfacialEnergy);
+    let late = &interfacial[interfacial.len() / 2..];
+    let oscillation_energy_j = interfacial.first().map_or(f64::NAN, |e0| {
+        e0 - late.iter().sum::<f64>() / late.len() as f64
+    });
     DropPoint {
         run,
         r_over_l0: RADIUS_M / l0,
@@ -299,6 +314,13 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
         extent_fit: fit_damped_cosine(&ts[efrom..en], &extent[efrom..en]),
         series,
         momentum_drift: momentum / (mass_kg * speed_m_s),
+        energy_trend_w: invariants::secular_trend(
+            &ts,
+            &budget,
+            FIT_FROM_S,
+            0.5 * reference_period_s,
+        ),
+        oscillation_energy_j,
     }
 }
 

@@ -46,8 +46,9 @@ pub const FOOT_BAND_L0: f64 = 12.0;
 
 /// The quadric's RMS distance [l0] above which the interface is not a sheet across the band
 /// (a lens of one liquid under the other, a layer), and no foot angle is read. On the tests'
-/// voxelised sheets it is 0.19–0.44 l0 (the staircase); in the plate_eq23 runs 0.07–0.50 l0
-/// where the interface crosses the drop and 1.0–4.4 l0 where one liquid lies over the other.
+/// voxelised sheets it is 0.19–0.44 l0 (the staircase); in the plate_eq23 runs (read with an
+/// 8 l0 band while the fit was built) 0.07–0.50 l0 where the interface crosses the drop and
+/// 1.0–4.4 l0 where one liquid lies over the other.
 pub const SHEET_RMS_LIMIT_L0: f64 = 0.75;
 
 /// Error bounds [deg] of [`foot_angle_deg`] on voxelised interfaces, as its tests check them:
@@ -70,7 +71,7 @@ pub fn foot_angle_error_deg(r_over_l0: f64) -> Option<f64> {
 
 /// θ12 [deg] at the foot of the 1–2 interface on the wall surface `z = wall_z_m` (m), inside
 /// liquid 1 (phase 0): the quadric of the module documentation fitted to the unlike-pair
-/// midpoints less than 8 l0 above the wall. 90° for a vertical interface, < 90° when liquid 1
+/// midpoints less than [`FOOT_BAND_L0`] above the wall. 90° for a vertical interface, < 90° when liquid 1
 /// runs under liquid 2.
 ///
 /// Err (never a panic) as [`super::geometry::solid_liquid_liquid_angle`], when the quadric's

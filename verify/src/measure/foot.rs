@@ -131,7 +131,7 @@ pub fn foot_angle_deg(cloud: &Cloud, classes: &Classes, wall_z_m: f64) -> Result
 mod tests {
     use super::*;
     use crate::measure::surface::classify;
-    use crate::measure::surface::lattice_shapes::{add_wall, in_ball, voxelise};
+    use crate::measure::surface::lattice_shapes::{add_wall, in_ball, plane_normal, voxelise};
 
     /// Drop radius (m).
     const R: f64 = 1e-3;
@@ -169,12 +169,6 @@ mod tests {
         (w, bad)
     }
 
-    /// Unit normal of a plane at `beta_deg` from +z, turned by `phi_deg` about z.
-    fn normal(beta_deg: f64, phi_deg: f64) -> [f64; 3] {
-        let (b, p) = (beta_deg.to_radians(), phi_deg.to_radians());
-        [b.sin() * p.cos(), b.sin() * p.sin(), b.cos()]
-    }
-
     #[test]
     fn tilted_planes_read_their_angle() {
         for div in [8.0, 16.0] {
@@ -191,7 +185,7 @@ mod tests {
             ]
             .into_iter()
             .map(|(beta, phi)| {
-                let n = normal(beta, phi);
+                let n = plane_normal(beta, phi);
                 let cloud = hemisphere(l0, |x| x[0] * n[0] + x[1] * n[1] + x[2] * n[2] <= 0.0);
                 (format!("plane β {beta}° φ {phi}°"), cloud, beta)
             })

@@ -875,7 +875,7 @@ pub fn sessile_contact_angle(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::measure::surface::lattice_shapes::{add_wall, in_ball, voxelise};
+    use crate::measure::surface::lattice_shapes::{add_wall, in_ball, plane_normal, voxelise};
     use crate::measure::surface::{classify, try_classify};
     use std::f64::consts::PI;
 
@@ -1220,12 +1220,6 @@ mod tests {
         cloud
     }
 
-    /// Unit normal of a plane at `beta_deg` from +z, turned by `phi_deg` about z.
-    fn normal(beta_deg: f64, phi_deg: f64) -> [f64; 3] {
-        let (b, p) = (beta_deg.to_radians(), phi_deg.to_radians());
-        [b.sin() * p.cos(), b.sin() * p.sin(), b.cos()]
-    }
-
     #[test]
     fn planar_liquid_liquid_interface_on_a_wall() {
         // A half-and-half hemisphere: the 1–2 interface is the plane with normal n (1 → 2) at
@@ -1234,7 +1228,7 @@ mod tests {
         // every layer, so the fitted normal is horizontal to round-off (1e-9°).
         for div in [8.0, 16.0] {
             for phi in [0.0, 20.0] {
-                let cloud = split_hemisphere(normal(90.0, phi), R / div);
+                let cloud = split_hemisphere(plane_normal(90.0, phi), R / div);
                 let t = solid_liquid_liquid_angle(&cloud, &classify(&cloud), 0.0).unwrap();
                 assert!((t - 90.0).abs() < 1e-9, "R/{div} φ {phi}: {t}");
             }
@@ -1251,7 +1245,7 @@ mod tests {
                 (45.0, 10.0),
                 (110.0, 7.0),
             ] {
-                let cloud = split_hemisphere(normal(beta, phi), R / div);
+                let cloud = split_hemisphere(plane_normal(beta, phi), R / div);
                 let t = solid_liquid_liquid_angle(&cloud, &classify(&cloud), 0.0).unwrap();
                 println!("R/{div} β {beta}° φ {phi}°: θ12 {t:.2}°");
                 assert!((t - beta).abs() < tol, "R/{div} β {beta} φ {phi}: {t}");
@@ -1364,7 +1358,7 @@ mod tests {
 
         // Split by the vertical plane x = 0: the lattice (sites at (i + ½) l0) is symmetric
         // under x → −x, so the shares are exactly one half each.
-        let cloud = split_hemisphere(normal(90.0, 0.0), l0);
+        let cloud = split_hemisphere(plane_normal(90.0, 0.0), l0);
         assert_eq!(wall_contact(&cloud, 0.0).wetted_fraction, vec![0.5, 0.5]);
         // Lifted off the wall (2 l0 gap): nothing wets it.
         let mut lifted = cloud.clone();

@@ -343,6 +343,12 @@ pub(crate) mod lattice_shapes {
         }
     }
 
+    /// Unit normal of a plane at `beta_deg` from +z, turned by `phi_deg` about z.
+    pub fn plane_normal(beta_deg: f64, phi_deg: f64) -> [f64; 3] {
+        let (b, p) = (beta_deg.to_radians(), phi_deg.to_radians());
+        [b.sin() * p.cos(), b.sin() * p.sin(), b.cos()]
+    }
+
     /// True when `x` (m) lies strictly inside the ball of centre `c` (m) and radius `r` (m).
     pub fn in_ball(x: [f64; 3], c: [f64; 3], r: f64) -> bool {
         (0..3).map(|k| (x[k] - c[k]).powi(2)).sum::<f64>() < r * r

@@ -322,7 +322,8 @@ fn drop_metrics(case: &str, d: &DropPoint) -> Vec<Metric> {
 }
 
 /// The energy budget's secular trend per reference period, in % of the drop's initial
-/// oscillation energy: the "no growth of energy", judged.
+/// oscillation energy, judged: a liquid model must not grow its energy, and one whose forces
+/// derive from the energy it counts keeps its budget.
 fn energy_trend(case: &str, d: &DropPoint, prefix: &str, at: &str) -> Metric {
     let per_period = 100.0 * d.energy_trend_w * d.reference_period_s / d.oscillation_energy_j;
     Metric::new(case, format!("{prefix} energy trend {at}"), "%/period", per_period)

@@ -7,8 +7,9 @@
 //!   release transient) is fitted by a damped cosine: the period against Rayleigh's for the
 //!   drop's volume, the decay rate against Lamb's with ν + ν_AV. Every drop's energy budget
 //!   (every energy plus everything dissipated) is judged to have no trend from 1 ms on
-//!   ([`crate::measure::invariants::secular_trend`], per period, in % of the drop's initial
-//!   oscillation energy): a model whose forces derive from the energy it counts keeps it.
+//!   ([`crate::measure::invariants::secular_trend`], per period, in % of the drop's mode
+//!   energy at release, `σ(A − 4πR²)` of its spheroid, [`crate::analytic::spheroid`]): a
+//!   model whose forces derive from the energy it counts keeps it.
 //! - **Caps at 30°, 60°, 120°**: a matte drop released as a hemisphere of radius `R` = 1 mm on
 //!   a free-slip plate in zero gravity, at three `R/l0`; its settled height (the mean of the
 //!   top over the last quarter of the run) gives the angle of the spherical cap of the drop's

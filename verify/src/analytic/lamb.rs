@@ -35,12 +35,8 @@
 //! non-positive or non-finite physical inputs return `f64::NAN`, so a caller can never mistake an
 //! invalid evaluation for a physical number.
 
+use super::is_positive_finite;
 use std::f64::consts::PI;
-
-/// `true` when `value` is a finite, strictly positive number.
-fn is_positive_finite(value: f64) -> bool {
-    value.is_finite() && value > 0.0
-}
 
 /// `true` for a shape mode (`l ≥ 2`) of a drop with a positive finite tension `σ` [N/m] and
 /// radius `R` [m].

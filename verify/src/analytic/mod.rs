@@ -7,3 +7,8 @@ pub mod neumann;
 pub mod spheroid;
 pub mod viscous_host;
 pub mod young_laplace;
+
+/// `true` when `value` is a finite, strictly positive number: the inputs the references accept.
+pub(crate) fn is_positive_finite(value: f64) -> bool {
+    value.is_finite() && value > 0.0
+}

@@ -2,13 +2,14 @@
 //! a sphere: the energy of its l = 2 mode at release, against which the convergence case
 //! reads its energy budget's trend.
 
+use super::is_positive_finite;
 use std::f64::consts::PI;
 
 /// Surface area [m²] of the spheroid with equatorial semi-axis `a_m` [m] and polar semi-axis
 /// `c_m` [m] (prolate for `c > a`, oblate for `c < a`, a sphere for `c = a`); NaN for a
 /// non-positive or non-finite semi-axis.
 pub fn spheroid_area_m2(a_m: f64, c_m: f64) -> f64 {
-    if !(a_m.is_finite() && c_m.is_finite() && a_m > 0.0 && c_m > 0.0) {
+    if !(is_positive_finite(a_m) && is_positive_finite(c_m)) {
         return f64::NAN;
     }
     let cap = 2.0 * PI * a_m * a_m;
@@ -31,7 +32,7 @@ pub fn spheroid_area_m2(a_m: f64, c_m: f64) -> f64 {
 /// builds it): `σ (A − 4πR²)`, about `(8π/5) σ R² ε²` for a small stretch (the l = 2 mode of
 /// amplitude ε). NaN for a non-positive radius or a stretch at or below −1.
 pub fn stretched_drop_excess_energy_j(sigma_n_m: f64, radius_m: f64, eps: f64) -> f64 {
-    if !(radius_m.is_finite() && radius_m > 0.0 && eps > -1.0) {
+    if !(is_positive_finite(radius_m) && eps > -1.0) {
         return f64::NAN;
     }
     let area = spheroid_area_m2(radius_m / (1.0 + eps).sqrt(), radius_m * (1.0 + eps));

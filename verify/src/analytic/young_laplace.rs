@@ -76,6 +76,7 @@
 //! Cost: a few hundred RK4 steps per profile, a few tens of profiles per call; a puddle of
 //! radius `R` needs `O(R/κ⁻¹)` times more steps (its flat top is long).
 
+use super::is_positive_finite;
 use std::f64::consts::PI;
 
 /// Local error tolerance of one integration step, relative to the size of each state component.
@@ -293,11 +294,6 @@ pub fn sessile_drop(
     // Apex Bond number Bo = ρ g b²/σ, so b = κ⁻¹ √Bo.
     let apex_radius_m = capillary_length_m * (0.5 * ln_bond).exp();
     Ok(solution.to_drop(length_m, apex_radius_m))
-}
-
-/// `true` when `value` is a finite, strictly positive number.
-fn is_positive_finite(value: f64) -> bool {
-    value.is_finite() && value > 0.0
 }
 
 /// `true` when `value` is a finite number `≥ 0`.

@@ -366,8 +366,8 @@ pub struct Effects {
     /// (Eq. 15, Natsui 2021) with Fowkes pair strengths, also wetting of walls;
     /// `"surface_stress"` — the continuum surface stress between liquid phases (Lafaurie et al.
     /// 1994, Hu & Adams 2006; docs/model.md §4a), no walls yet; `"surface_force"` — the
-    /// continuum surface force between liquid phases (Brackbill et al. 1992; §4b), no walls
-    /// yet; `false` (the default): none.
+    /// continuum surface force between liquid phases (Brackbill et al. 1992; §4b), walls as
+    /// `surface_force_walls` says; `false` (the default): none.
     #[serde(default)]
     pub interfacial_tension: TensionModel,
     /// How walls take part in the surface force (with `interfacial_tension = "surface_force"`

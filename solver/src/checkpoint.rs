@@ -62,7 +62,7 @@ mod scene_as_toml {
 }
 
 /// Current [`Checkpoint::version`].
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 
 impl Simulation {
     /// The state between two steps.

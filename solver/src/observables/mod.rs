@@ -97,6 +97,11 @@ pub struct Observables {
     /// The energy budget [J]: kinetic + interfacial + compression + gravity + wall repulsion
     /// + everything dissipated. Constant for a conservative discretisation.
     pub energy_balance_j: f64,
+    /// The work of the continuum models' interfacial force on the liquid since the start [J]
+    /// (zero under the pairwise potential; not in the budget, which counts their interfacial
+    /// energy estimate instead: [`crate::physics::forces::ledger::InterfacialWork`]).
+    #[serde(default)]
+    pub interfacial_force_work_j: f64,
     /// Total momentum [kg m/s].
     pub momentum_kg_m_s: [f64; 3],
     /// Largest particle speed [m/s].
@@ -200,6 +205,7 @@ pub fn observe(
             + gravity_energy_j
             + wall_repulsion_energy_j
             + d.total_j(),
+        interfacial_force_work_j: d.interfacial.work_j,
         momentum_kg_m_s: momentum.into(),
         max_speed_m_s: max_speed2.sqrt(),
         max_density_deviation: max_dev,

@@ -79,7 +79,29 @@ impl Simulation {
         }
         self.particles.acc = acc;
         self.drho_next = drho;
+        self.book_continuum_tension();
         self.timings.forces_s += t1.elapsed().as_secs_f64();
+    }
+
+    /// Sets the continuum tension's power `P = Σ F·v` [W] and `Q = Σ F·a` [W/s] at the
+    /// velocities the forces were evaluated with and the new accelerations, for the kicks to
+    /// book its work ([`crate::physics::forces::ledger::InterfacialWork`]); zero without it.
+    /// Summed serially in particle order: the same bits for any thread count.
+    fn book_continuum_tension(&mut self) {
+        let force = match self.model.effects.continuum_tension {
+            Some(ContinuumForm::Stress) => &self.surface_stress.force,
+            Some(ContinuumForm::Force) => &self.surface_force.force,
+            None => return,
+        };
+        let p = &self.particles;
+        let (mut velocity_w, mut acceleration_w_s) = (0.0, 0.0);
+        for ((f, v), a) in force.iter().zip(&p.vel).zip(&p.acc) {
+            velocity_w += f.dot(v);
+            acceleration_w_s += f.dot(a);
+        }
+        let w = &mut self.dissipation.interfacial;
+        w.velocity_w = velocity_w;
+        w.acceleration_w_s = acceleration_w_s;
     }
 
     /// Adds the continuum tension's accelerations [m/s²] of the current state to `acc`, in the

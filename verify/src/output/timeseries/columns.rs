@@ -65,6 +65,9 @@ pub enum RunColumn {
     DissipatedShifting,
     /// The energy budget: the energies plus everything dissipated [J].
     EnergyBalance,
+    /// The work of the continuum models' interfacial force on the liquid [J] (not in the
+    /// budget; zero under the potential).
+    InterfacialForceWork,
     /// Total momentum along an axis [kg m/s].
     Momentum(Axis),
     /// Largest particle speed [m/s].
@@ -77,7 +80,7 @@ pub enum RunColumn {
 
 impl RunColumn {
     /// Every column of the whole run, in file order.
-    pub const ALL: [RunColumn; 22] = [
+    pub const ALL: [RunColumn; 23] = [
         RunColumn::Time,
         RunColumn::Dt,
         RunColumn::Step,
@@ -94,6 +97,7 @@ impl RunColumn {
         RunColumn::DissipatedDensityReinit,
         RunColumn::DissipatedShifting,
         RunColumn::EnergyBalance,
+        RunColumn::InterfacialForceWork,
         RunColumn::Momentum(Axis::X),
         RunColumn::Momentum(Axis::Y),
         RunColumn::Momentum(Axis::Z),
@@ -121,6 +125,7 @@ impl RunColumn {
             RunColumn::DissipatedDensityReinit => "dissipated_density_reinit_J".into(),
             RunColumn::DissipatedShifting => "dissipated_shifting_J".into(),
             RunColumn::EnergyBalance => "energy_balance_J".into(),
+            RunColumn::InterfacialForceWork => "interfacial_force_work_J".into(),
             RunColumn::Momentum(ax) => format!("momentum_{}_kg_m_s", ax.name()),
             RunColumn::MaxSpeed => "max_speed_m_s".into(),
             RunColumn::MaxDensityDeviation => "max_density_deviation".into(),
@@ -147,6 +152,7 @@ impl RunColumn {
             RunColumn::DissipatedDensityReinit => o.dissipated_density_reinit_j,
             RunColumn::DissipatedShifting => o.dissipated_shifting_j,
             RunColumn::EnergyBalance => o.energy_balance_j,
+            RunColumn::InterfacialForceWork => o.interfacial_force_work_j,
             RunColumn::Momentum(ax) => o.momentum_kg_m_s[ax.index()],
             RunColumn::MaxSpeed => o.max_speed_m_s,
             RunColumn::MaxDensityDeviation => o.max_density_deviation,

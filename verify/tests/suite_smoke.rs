@@ -207,6 +207,18 @@ fn convergence_smoke() {
         let name = format!("{s}: observed order");
         assert!(m.iter().any(|x| x.name == name), "{name}");
     }
+    // the continuum drops' energy trends carry the force's own share, from its booked work
+    // (the potential's, whose force derives from its energy, none)
+    for x in m.iter().filter(|x| x.name.contains("energy trend")) {
+        let continuum = x.name.starts_with("surface-");
+        assert_eq!(
+            x.note.contains("of it the interfacial force's own"),
+            continuum,
+            "{}: {}",
+            x.name,
+            x.note
+        );
+    }
     assert!(out.join("convergence/error_vs_spacing.png").exists());
     // the drop's table carries the elastic drop's bracket for the default setting, whose
     // lattice has C′ and C44 > 0: both estimates are finite and shorter than Rayleigh's

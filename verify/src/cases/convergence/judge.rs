@@ -337,11 +337,25 @@ fn energy_trend(case: &str, d: &DropPoint, prefix: &str, at: &str) -> Metric {
             ),
         )
         .note(format!(
-            "{}the energy budget (every energy plus everything dissipated) from 1 ms on, its slope through its swing at half the period: {:+.2e} W, against the drop's mode energy at release {:.2e} J (the surface energy σ(A − 4πR²) its spheroid holds beyond a sphere's, computed); a positive trend is energy the forces put in that the interfacial energy does not give up, a negative one energy lost uncounted",
+            "{}the energy budget (every energy plus everything dissipated) from 1 ms on, its slope through its swing at half the period: {:+.2e} W, against the drop's mode energy at release {:.2e} J (the surface energy σ(A − 4πR²) its spheroid holds beyond a sphere's, computed); a positive trend is energy the forces put in that the interfacial energy does not give up, a negative one energy lost uncounted{}",
             d.run.status_note(),
             d.energy_trend_w,
-            d.mode_energy_j
+            d.mode_energy_j,
+            force_share(d)
         ))
+}
+
+/// The continuum force's own share of the energy trend, for the trend's note.
+fn force_share(d: &DropPoint) -> String {
+    match d.force_trend_w {
+        Some(w) => format!(
+            "; of it the interfacial force's own (the slope of its booked work plus its energy estimate, `interfacial_force_work_J + interfacial_energy_J`): {w:+.2e} W"
+        ),
+        None if d.host_model.is_some() => {
+            "; the interfacial force's own share is not recorded (a run from before `interfacial_force_work_J`)".into()
+        }
+        None => String::new(),
+    }
 }
 
 fn cap_metrics(case: &str, c: &CapPoint) -> Vec<Metric> {

@@ -71,6 +71,11 @@ pub struct DropPoint<'r> {
     /// the energy the budget counts and the integrator keeps it; positive where the forces
     /// put in energy that the budget's interfacial energy does not give up.
     pub energy_trend_w: f64,
+    /// The interfacial force's own share of that trend [W]: the same slope of its work plus
+    /// its energy estimate (`interfacial_force_work_J + interfacial_energy_J`), the energy it
+    /// put in that the estimate does not hold. `None` under the potential (its work is not
+    /// booked apart: it derives from its energy) and for runs recorded before the column.
+    pub force_trend_w: Option<f64>,
     /// The energy of the drop's mode at release [J]: the surface energy its spheroid holds
     /// beyond a sphere's of the same volume, `σ (A − 4πR²)`
     /// ([`spheroid::stretched_drop_excess_energy_j`]; 3.25e-9 J for the water drop at
@@ -296,6 +301,16 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
     let speed_m_s =
         (run.timeseries.run_column(RunColumn::MaxSpeed).into_iter()).fold(0.0, f64::max);
     let budget = run.timeseries.run_column(RunColumn::EnergyBalance);
+    let force_work = run.timeseries.run_column(RunColumn::InterfacialForceWork);
+    let force_trend_w = (host_model.is_some() && force_work.len() == ts.len()).then(|| {
+        let estimate = run.timeseries.run_column(RunColumn::InterfacialEnergy);
+        let created: Vec<f64> = force_work
+            .iter()
+            .zip(&estimate)
+            .map(|(w, e)| w + e)
+            .collect();
+        invariants::secular_trend(&ts, &created, FIT_FROM_S, 0.5 * reference_period_s)
+    });
     let amplitude = amplitude(scene);
     DropPoint {
         run,
@@ -319,6 +334,7 @@ fn drop_point(run: &RunData) -> DropPoint<'_> {
             FIT_FROM_S,
             0.5 * reference_period_s,
         ),
+        force_trend_w,
         mode_energy_j: spheroid::stretched_drop_excess_energy_j(sigma, radius, amplitude),
     }
 }

@@ -151,11 +151,16 @@ fn the_liquid_solid_tension_carries_the_contact_line_calibration() {
     // the channel measured with the run's colour kernel: Wendland C2 of support r_e = 4.2 l0
     let colour = WendlandC2::new(4.2 * L0 / WendlandC2::new(1.0).support_m());
     let share = young_share(colour, L0, false);
-    assert_eq!(model.contact_line_factor, 1.0 / share);
+    // the same function on the same inputs, but compiled twice (here, with L0 a constant, and
+    // in the model): the optimiser's folding differs between the two and between builds (CI's
+    // non-incremental build once gave 1.1169275103562597 against the model's …593, 2 ulp),
+    // so the factor is compared to a few ulp, far below anything the calibration measures
+    let same = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-14;
+    assert!(same(model.contact_line_factor, 1.0 / share), "{share}");
     // the phases: a 0, g 1, the plate's solid 2; Young's −σ cos θ divided by the share, the
     // gas (no σ) none, the pair's tension as typed
     let young = -0.05 * 60f64.to_radians().cos() / share;
-    assert!((model.surface_stress_sigma(0, 2) / young - 1.0).abs() < 1e-15);
+    assert!(same(model.surface_stress_sigma(0, 2), young));
     assert_eq!(model.surface_stress_sigma(1, 2), 0.0);
     assert_eq!(model.surface_stress_sigma(0, 1), 0.05);
     // no walls: no calibration
@@ -169,7 +174,7 @@ fn the_liquid_solid_tension_carries_the_contact_line_calibration() {
     // the wall normal's treatment: its own channel's share, and the walls' solid with it
     let model = Model::from_scene(&scene(&normal(&cap(60.0, "")))).unwrap();
     let share = young_share(colour, L0, true);
-    assert_eq!(model.contact_line_factor, 1.0 / share);
+    assert!(same(model.contact_line_factor, 1.0 / share), "{share}");
     assert!(matches!(
         model.surface_force_walls,
         Walls::Normal(WallNormal { solid: 2, .. })

@@ -139,6 +139,41 @@ fn an_invalid_scene_exits_with_code_2_and_names_the_field() {
 }
 
 #[test]
+fn a_case_refuses_an_unknown_key_and_a_change_of_model_before_writing_anything() {
+    let dir = tmp("case-set");
+    let out = dir.join("out");
+    let refused = |set: &str| {
+        let r = verify()
+            .args([
+                "case",
+                "convergence",
+                "--only",
+                "csf_drop_r10",
+                "--set",
+                set,
+                "--out",
+            ])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(!out.exists(), "nothing written for {set}");
+        (
+            r.status.code(),
+            String::from_utf8_lossy(&r.stderr).to_string(),
+        )
+    };
+    let (code, err) = refused("nonsense.key=1");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("unknown field `nonsense`"), "{err}");
+    // the surface force's drop with the difference form and its walls as a phase: a model the
+    // case does not declare, which it would otherwise measure as the potential's free drop
+    let (code, err) = refused("density.pressure_gradient=\"difference\"");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("none the case declares"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn a_failing_run_exits_1_keeps_its_outputs_and_says_why() {
     // gravity of 1e4 m/s² accelerates the drop past Mach 1 (12 m/s at c = 12 m/s) after about
     // 1.2 ms: several outputs are written before the health check stops the run

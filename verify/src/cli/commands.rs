@@ -113,6 +113,11 @@ pub(crate) fn run_suite(
         .map(|c| c.name())
         .filter(|c| names.map_or(true, |n| n.iter().any(|x| x == c)))
         .collect();
+    // every chosen case's runs as `--set` makes them, refused (exit 2) before anything is
+    // written or simulated if a key is unknown or a case will not take the change
+    for case in cases.iter().filter(|c| ran.contains(&c.name())) {
+        runner::specs_of(case.as_ref(), opts).map_err(|e| plan::InputError(format!("{e:#}")))?;
+    }
     runner::write_record(&opts.out, opts.fidelity, &ran, &opts.overrides)?;
     let mut tally = verify::suite::tally::RunTally::default();
     for case in &cases {

@@ -181,6 +181,12 @@ pub trait Case: Sync {
     }
     /// The runs at a fidelity.
     fn runs(&self, fidelity: Fidelity) -> Vec<RunSpec>;
+    /// Refuses the run `id` whose scene `--set` changed from `written` to `run` if the case
+    /// would then name or judge it as something it is not (a model it does not declare). By
+    /// default every change is accepted.
+    fn check_override(&self, _id: &str, _written: &Scene, _run: &Scene) -> anyhow::Result<()> {
+        Ok(())
+    }
     /// Extra values recorded at every output (`probes.csv`).
     fn probe(&self, _sim: &Simulation) -> Vec<(&'static str, f64)> {
         Vec::new()

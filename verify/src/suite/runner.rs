@@ -98,8 +98,11 @@ pub fn specs_of(case: &dyn Case, opts: &SuiteOptions) -> anyhow::Result<Vec<RunS
         specs.retain(|s| opts.only.contains(&s.id));
     }
     for spec in &mut specs {
-        spec.scene = super::overrides::apply(&spec.scene, &opts.overrides)
+        let run = super::overrides::apply(&spec.scene, &opts.overrides)
             .with_context(|| format!("{}/{}", case.name(), spec.id))?;
+        case.check_override(&spec.id, &spec.scene, &run)
+            .with_context(|| format!("{}/{}", case.name(), spec.id))?;
+        spec.scene = run;
     }
     for spec in &specs {
         if let Some(declared) = case.effects() {

@@ -600,6 +600,39 @@ impl Case for Convergence {
         // the drops have no wall, the caps do
         None
     }
+    fn check_override(
+        &self,
+        id: &str,
+        written: &solver::Scene,
+        run: &solver::Scene,
+    ) -> anyhow::Result<()> {
+        // the case names, references and tabulates a run by its scene's model: a change that
+        // makes it another model's (or none the case declares) would be measured as that
+        let name = |m: Option<HostModel>| m.map_or("the pairwise potential", |m| m.name);
+        let (was, is) = (HostModel::of(written), HostModel::of(run));
+        if was == is && written.effects.interfacial_tension == run.effects.interfacial_tension {
+            return Ok(());
+        }
+        let is_named = match is {
+            Some(m) => format!("the {} (its runs' ids begin with {})", m.name, m.id),
+            None if run.effects.interfacial_tension != TensionModel::Potential => format!(
+                "none the case declares (tension {:?}, walls {:?}, pressure force {:?}, shifting {}), \
+                 which the case would measure as the pairwise potential",
+                run.effects.interfacial_tension,
+                run.effects.surface_force_walls,
+                run.density.pressure_gradient,
+                run.effects.particle_shifting.is_some()
+            ),
+            None => "the pairwise potential".into(),
+        };
+        anyhow::bail!(
+            "--set turns run {id}, of the {}, into a scene whose model is {is_named}: the case \
+             names, references and tabulates a run by its model, so it refuses the change; \
+             run that model's own run if the case has one, or the scene outside the case \
+             (`verify run`, `verify sweep`)",
+            name(was)
+        )
+    }
     fn accepted_findings(&self, _: Fidelity) -> Vec<(Check, String)> {
         vec![(
             Check::Resolution,
@@ -767,6 +800,42 @@ mod tests {
             None,
             "shifting with the symmetric form: no model"
         );
+    }
+
+    #[test]
+    fn a_set_that_changes_the_model_is_refused_and_one_that_keeps_it_is_not() {
+        let c = Convergence;
+        let check = |written: &solver::Scene, edit: &dyn Fn(&mut solver::Scene)| {
+            let mut run = written.clone();
+            edit(&mut run);
+            c.check_override("x", written, &run)
+        };
+        let drop = css_drop_scene(Fidelity::Smoke, &HOST_MODELS[1], 10.0, EPSILON);
+        // the same model: another colour kernel, another h (the default h's model)
+        assert!(check(&drop, &|s| s.discretisation.h_over_l0 = 1.1).is_ok());
+        assert!(check(&drop, &|s| s.discretisation.re_over_l0 = 6.0).is_ok());
+        // the difference form with the drop's walls as a phase: no model the case declares
+        let e = check(&drop, &|s| {
+            s.density.pressure_gradient = PressureGradient::Difference
+        })
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("none the case declares"), "{e}");
+        // the surface force's drop as the surface stress's, the potential's as the force's
+        let e = check(&drop, &|s| {
+            s.effects.interfacial_tension = TensionModel::SurfaceStress
+        })
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("(its runs' ids begin with css)"), "{e}");
+        let free = drop_scene(Fidelity::Smoke, 10.0);
+        assert!(check(&free, &|s| s.effects.interfacial_tension =
+            TensionModel::SurfaceForce)
+        .is_err());
+        assert!(check(&free, &|s| s.effects.interfacial_tension =
+            TensionModel::Off)
+        .is_err());
+        assert!(check(&free, &|s| s.discretisation.re_over_l0 = 3.1).is_ok());
     }
 
     #[test]

@@ -629,7 +629,8 @@ impl Case for Convergence {
             "--set turns run {id}, of the {}, into a scene whose model is {is_named}: the case \
              names, references and tabulates a run by its model, so it refuses the change; \
              run that model's own run if the case has one, or the scene outside the case \
-             (`verify run`, `verify sweep`)",
+             (`verify plan suite convergence --out P` writes every run's scene to P/scenes/, \
+             named in P/plan.json; edit one and give it to `verify run` or `verify sweep`)",
             name(was)
         )
     }

@@ -62,7 +62,7 @@ mod scene_as_toml {
 }
 
 /// Current [`Checkpoint::version`].
-pub const VERSION: u32 = 3;
+pub const VERSION: u32 = 4; // 4: the non-affine viscosity's booked work in `Dissipation`
 
 impl Simulation {
     /// The state between two steps.

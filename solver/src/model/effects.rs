@@ -42,6 +42,8 @@ pub struct Effects {
     pub wall_repulsion: bool,
     /// Particle shifting's coefficient `A` [-], if shifting is on.
     pub particle_shifting: Option<f64>,
+    /// The non-affine viscosity's coefficient `α` [-] (`μ_na = α ρ̄ c h`), if it is on.
+    pub nonaffine_viscosity: Option<f64>,
     /// Density scheme.
     pub density: DensityScheme,
     /// Density re-initialisation `(filter, every n steps)`, if any.
@@ -74,6 +76,7 @@ impl Effects {
             walls: !scene.walls.is_empty(),
             wall_repulsion: e.wall_repulsion,
             particle_shifting: e.particle_shifting.as_ref().map(|p| p.coefficient),
+            nonaffine_viscosity: e.nonaffine_viscosity.as_ref().map(|n| n.coefficient),
             no_slip_walls: scene
                 .walls
                 .iter()
@@ -156,6 +159,9 @@ impl Effects {
         }
         if let Some(a) = self.particle_shifting {
             v.push(format!("particle shifting (A = {a})"));
+        }
+        if let Some(a) = self.nonaffine_viscosity {
+            v.push(format!("non-affine viscosity (α = {a})"));
         }
         v.push(match self.density {
             DensityScheme::Summation => "density: summation".into(),

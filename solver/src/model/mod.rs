@@ -353,6 +353,15 @@ impl Model {
         } else {
             None
         };
+        // the non-affine viscosity μ_na = α ρ c h: ρ h²/μ_na = h/(α c)
+        let nonaffine = self
+            .effects
+            .nonaffine_viscosity
+            .map(|alpha| f.viscous * h / (alpha * self.c_m_s));
+        let viscous = match (viscous, nonaffine) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
         let capillary = if self.effects.interfacial_tension {
             (0..self.n_liquids)
                 .map(|a| {

@@ -4,6 +4,7 @@ pub mod density;
 pub mod eos;
 pub mod forces;
 pub mod implicit_viscosity;
+pub mod nonaffine_viscosity;
 pub mod shifting;
 pub mod surface_tension;
 pub mod walls;

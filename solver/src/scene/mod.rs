@@ -388,6 +388,12 @@ pub struct Effects {
     /// boundary near a free surface, another liquid or a wall. Omit for none (the default).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub particle_shifting: Option<ParticleShifting>,
+    /// A viscosity on the non-affine part of the velocity (Morris et al. 1997's pair form on
+    /// what the particles' fitted velocity gradients do not explain; docs/model.md §3): it
+    /// damps particle-scale motion at the rate `α c/h` and does not act on any linear flow.
+    /// Omit for none (the default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub nonaffine_viscosity: Option<NonAffineViscosity>,
     /// Laminar viscosity integrated implicitly (backward Euler, conjugate gradients) instead of
     /// explicitly: the viscous step limit `0.125 ρh²/μ` no longer applies, for very viscous
     /// liquids. Needs `laminar_viscosity`; walls must be free-slip. Omit for the explicit term
@@ -510,6 +516,15 @@ fn f_1e_6() -> f64 {
 
 fn default_max_iterations() -> u32 {
     200
+}
+
+/// The coefficient of the non-affine viscosity.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NonAffineViscosity {
+    /// `α` in `μ_na = α ρ̄ c h` [-] (`ρ̄` a pair's mean rest density, `c` the sound speed, `h`
+    /// the smoothing length). No default: it is a choice the scene states.
+    pub coefficient: f64,
 }
 
 /// Coefficients of particle shifting.

@@ -300,6 +300,16 @@ fn effects(s: &Scene) -> R {
             ));
         }
     }
+    if let Some(na) = &e.nonaffine_viscosity {
+        // its step limit 0.125 h/(α c) is the CFL limit's 0.25 h/c at α = 0.5
+        if !(na.coefficient > 0.0 && na.coefficient <= 0.5) {
+            return Err(SceneError::invalid(
+                "effects.nonaffine_viscosity.coefficient",
+                na.coefficient,
+                "α in μ_na = α ρ c h: in (0, 0.5] (beyond 0.5 its viscous step limit is below the CFL limit; 0.01–0.1 damps particle-scale motion at 0.01–0.1 c/h)",
+            ));
+        }
+    }
     if e.surface_force_walls != SurfaceForceWalls::default()
         && e.interfacial_tension != TensionModel::SurfaceForce
     {

@@ -77,9 +77,13 @@ impl Simulation {
         if let Some(form) = self.model.effects.continuum_tension {
             self.add_continuum_tension::<K>(form, &mut acc);
         }
+        if let Some(alpha) = self.model.effects.nonaffine_viscosity {
+            self.add_nonaffine_viscosity::<K>(alpha, &mut acc);
+        }
         self.particles.acc = acc;
         self.drho_next = drho;
         self.book_continuum_tension();
+        self.book_nonaffine_viscosity();
         self.timings.forces_s += t1.elapsed().as_secs_f64();
     }
 
@@ -100,6 +104,51 @@ impl Simulation {
             acceleration_w_s += f.dot(a);
         }
         let w = &mut self.dissipation.interfacial;
+        w.velocity_w = velocity_w;
+        w.acceleration_w_s = acceleration_w_s;
+    }
+
+    /// Adds the non-affine viscosity's accelerations [m/s²] at the current velocities to `acc`
+    /// (`μ_na = α ρ̄ c h`, [`crate::physics::nonaffine_viscosity`]); keeps its force for the
+    /// booking.
+    fn add_nonaffine_viscosity<K: Kernel>(&mut self, alpha: f64, acc: &mut [Vec3]) {
+        use crate::physics::nonaffine_viscosity as na;
+        let m = &self.model;
+        let p = &self.particles;
+        let scale = alpha * m.c_m_s * m.h_m; // m²/s
+        let rho0 = &m.rho0;
+        let mu = |a: u8, b: u8| scale * 0.5 * (rho0[a as usize] + rho0[b as usize]);
+        let inp = na::Input {
+            kernel: K::new(m.h_m),
+            pos: &p.pos,
+            vel: &p.vel,
+            vol: &p.vol,
+            phase: &p.phase,
+            mu_pa_s: &mu,
+            n_fluid: p.n_fluid,
+            lists: &self.search.lists,
+        };
+        let grad = na::gradients(&inp);
+        self.nonaffine.resize(p.n_fluid, Vec3::zeros());
+        na::forces(&inp, &grad, &mut self.nonaffine);
+        acc.par_iter_mut()
+            .zip(self.nonaffine.par_iter().zip(p.phase.par_iter()))
+            .for_each(|(a, (f, &ph))| *a += f / m.mass[ph as usize]);
+    }
+
+    /// Sets the non-affine viscosity's `P = Σ F·v` [W] and `Q = Σ F·a` [W/s] for the kicks
+    /// (as [`Self::book_continuum_tension`]); zero without it. Serial, in particle order.
+    fn book_nonaffine_viscosity(&mut self) {
+        if self.model.effects.nonaffine_viscosity.is_none() {
+            return;
+        }
+        let p = &self.particles;
+        let (mut velocity_w, mut acceleration_w_s) = (0.0, 0.0);
+        for ((f, v), a) in self.nonaffine.iter().zip(&p.vel).zip(&p.acc) {
+            velocity_w += f.dot(v);
+            acceleration_w_s += f.dot(a);
+        }
+        let w = &mut self.dissipation.nonaffine;
         w.velocity_w = velocity_w;
         w.acceleration_w_s = acceleration_w_s;
     }

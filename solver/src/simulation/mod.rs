@@ -97,6 +97,8 @@ pub struct Simulation {
     pub surface_stress: crate::physics::surface_tension::surface_stress::StressScratch,
     /// The continuum surface force's scratch (empty unless the scene chose it).
     pub surface_force: crate::physics::surface_tension::surface_force::ForceScratch,
+    /// The non-affine viscosity's force per fluid particle [N] (empty without it).
+    nonaffine: Vec<crate::state::Vec3>,
     /// Scratch of the fluid's re-sort, kept between rebuilds.
     rebuild: neighbours::RebuildScratch,
     /// The implicit viscous solves of this process (zero without implicit viscosity).
@@ -173,6 +175,7 @@ impl Simulation {
             surface_stress: Default::default(),
             surface_force: Default::default(),
             rebuild: Default::default(),
+            nonaffine: Vec::new(),
             viscous_solves: Default::default(),
             viscous: Default::default(),
             shift,

@@ -15,6 +15,7 @@ mod fuzz_scenes;
 mod implicit_viscosity;
 mod laminar_forms;
 mod lattice_energy;
+mod nonaffine_viscosity;
 mod periodic;
 mod pressure_forms;
 mod scene_errors;

@@ -171,18 +171,18 @@ pub struct Dissipation {
     /// [`Dissipation::total_j`] ([`InterfacialWork`]).
     #[serde(default)]
     pub interfacial: InterfacialWork,
+    /// The work of the non-affine viscosity so far (≤ 0; its negative is in
+    /// [`Dissipation::total_j`]).
+    #[serde(default)]
+    pub nonaffine: ForceWork,
 }
 
-/// The work of the continuum models' interfacial force on the liquid (docs/model.md §4a,
-/// §4b), booked per kick at the kick's mean velocity as the other terms' (module doc).
-///
-/// It is kept out of the budget, which counts the models' interfacial energy estimate `E`
-/// instead: the force is the gradient of no energy, and `W + ΔE` is the energy it put into
-/// the liquid that `E` does not hold (the budget's drift where every other force derives from
-/// an energy). Zero under the pairwise potential, whose force is `−∇` of the interfacial
-/// energy the budget counts.
+/// The work of a force computed outside the pair loop, booked per kick at the kick's mean
+/// velocity as the loop's terms' are (module doc): the continuum models' interfacial force
+/// ([`InterfacialWork`]) and the non-affine viscosity
+/// ([`crate::physics::nonaffine_viscosity`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct InterfacialWork {
+pub struct ForceWork {
     /// `Σ W` over the kicks so far [J].
     pub work_j: f64,
     /// `P = Σ_i F_i·v_i` [W] of the current force `F` at the current velocities.
@@ -190,6 +190,24 @@ pub struct InterfacialWork {
     /// `Q = Σ_i F_i·a_i` [W/s] of the current force and accelerations.
     pub acceleration_w_s: f64,
 }
+
+impl ForceWork {
+    /// Books a kick of `tau_s` [s] and moves `P` to the new velocities.
+    fn kick(&mut self, tau_s: f64) {
+        self.work_j += tau_s * (self.velocity_w + 0.5 * tau_s * self.acceleration_w_s);
+        self.velocity_w += tau_s * self.acceleration_w_s;
+    }
+}
+
+/// The work of the continuum models' interfacial force on the liquid (docs/model.md §4a,
+/// §4b).
+///
+/// It is kept out of the budget, which counts the models' interfacial energy estimate `E`
+/// instead: the force is the gradient of no energy, and `W + ΔE` is the energy it put into
+/// the liquid that `E` does not hold (the budget's drift where every other force derives from
+/// an energy). Zero under the pairwise potential, whose force is `−∇` of the interfacial
+/// energy the budget counts.
+pub type InterfacialWork = ForceWork;
 
 impl Dissipation {
     /// Books a kick `v ← v + τ a` of `tau_s` [s] with the current accelerations, and moves
@@ -202,9 +220,8 @@ impl Dissipation {
             self.dissipated_j[c] -= tau_s * (p.velocity_w[c] + 0.5 * tau_s * q);
             p.velocity_w[c] += tau_s * q;
         }
-        let w = &mut self.interfacial;
-        w.work_j += tau_s * (w.velocity_w + 0.5 * tau_s * w.acceleration_w_s);
-        w.velocity_w += tau_s * w.acceleration_w_s;
+        self.interfacial.kick(tau_s);
+        self.nonaffine.kick(tau_s);
     }
 
     /// Energy dissipated by `ledger` so far [J]: liquid pairs (`wall` false) or pairs with
@@ -213,10 +230,12 @@ impl Dissipation {
         self.dissipated_j[channel(ledger as usize, wall)]
     }
 
-    /// Everything taken out of the liquid so far [J]: every channel, the re-initialisations
-    /// and the shifting (not the interfacial force's work, [`InterfacialWork`]).
+    /// Everything taken out of the liquid so far [J]: every channel, the re-initialisations,
+    /// the shifting and the non-affine viscosity (not the interfacial force's work,
+    /// [`InterfacialWork`]).
     pub fn total_j(&self) -> f64 {
         self.dissipated_j.iter().sum::<f64>() + self.density_reinit_j + self.shifting_j
+            - self.nonaffine.work_j
     }
 }
 

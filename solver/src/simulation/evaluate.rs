@@ -97,12 +97,7 @@ impl Simulation {
             Some(ContinuumForm::Force) => &self.surface_force.force,
             None => return,
         };
-        let p = &self.particles;
-        let (mut velocity_w, mut acceleration_w_s) = (0.0, 0.0);
-        for ((f, v), a) in force.iter().zip(&p.vel).zip(&p.acc) {
-            velocity_w += f.dot(v);
-            acceleration_w_s += f.dot(a);
-        }
+        let (velocity_w, acceleration_w_s) = power(force, &self.particles);
         let w = &mut self.dissipation.interfacial;
         w.velocity_w = velocity_w;
         w.acceleration_w_s = acceleration_w_s;
@@ -115,39 +110,32 @@ impl Simulation {
         use crate::physics::nonaffine_viscosity as na;
         let m = &self.model;
         let p = &self.particles;
-        let scale = alpha * m.c_m_s * m.h_m; // m²/s
-        let rho0 = &m.rho0;
-        let mu = |a: u8, b: u8| scale * 0.5 * (rho0[a as usize] + rho0[b as usize]);
         let inp = na::Input {
             kernel: K::new(m.h_m),
             pos: &p.pos,
             vel: &p.vel,
             vol: &p.vol,
             phase: &p.phase,
-            mu_pa_s: &mu,
+            nu_m2_s: alpha * m.c_m_s * m.h_m,
+            rho0: &m.rho0,
             n_fluid: p.n_fluid,
             lists: &self.search.lists,
         };
-        let grad = na::gradients(&inp);
-        self.nonaffine.resize(p.n_fluid, Vec3::zeros());
-        na::forces(&inp, &grad, &mut self.nonaffine);
+        let s = &mut self.nonaffine;
+        na::gradients(&inp, &mut s.gradient);
+        na::forces(&inp, &s.gradient, &mut s.force);
         acc.par_iter_mut()
-            .zip(self.nonaffine.par_iter().zip(p.phase.par_iter()))
+            .zip(s.force.par_iter().zip(p.phase.par_iter()))
             .for_each(|(a, (f, &ph))| *a += f / m.mass[ph as usize]);
     }
 
     /// Sets the non-affine viscosity's `P = Σ F·v` [W] and `Q = Σ F·a` [W/s] for the kicks
-    /// (as [`Self::book_continuum_tension`]); zero without it. Serial, in particle order.
+    /// (as [`Self::book_continuum_tension`]); zero without it.
     fn book_nonaffine_viscosity(&mut self) {
         if self.model.effects.nonaffine_viscosity.is_none() {
             return;
         }
-        let p = &self.particles;
-        let (mut velocity_w, mut acceleration_w_s) = (0.0, 0.0);
-        for ((f, v), a) in self.nonaffine.iter().zip(&p.vel).zip(&p.acc) {
-            velocity_w += f.dot(v);
-            acceleration_w_s += f.dot(a);
-        }
+        let (velocity_w, acceleration_w_s) = power(&self.nonaffine.force, &self.particles);
         let w = &mut self.dissipation.nonaffine;
         w.velocity_w = velocity_w;
         w.acceleration_w_s = acceleration_w_s;
@@ -214,4 +202,15 @@ impl Simulation {
         self.dissipation.density_reinit_j += before - after;
         self.timings.density_s += t0.elapsed().as_secs_f64();
     }
+}
+
+/// `(Σ F·v [W], Σ F·a [W/s])` of a force per fluid particle at the particles' velocities and
+/// accelerations. Summed serially in particle order: the same bits for any thread count.
+fn power(force: &[Vec3], p: &crate::state::Particles) -> (f64, f64) {
+    let (mut velocity_w, mut acceleration_w_s) = (0.0, 0.0);
+    for ((f, v), a) in force.iter().zip(&p.vel).zip(&p.acc) {
+        velocity_w += f.dot(v);
+        acceleration_w_s += f.dot(a);
+    }
+    (velocity_w, acceleration_w_s)
 }

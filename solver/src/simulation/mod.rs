@@ -97,14 +97,22 @@ pub struct Simulation {
     pub surface_stress: crate::physics::surface_tension::surface_stress::StressScratch,
     /// The continuum surface force's scratch (empty unless the scene chose it).
     pub surface_force: crate::physics::surface_tension::surface_force::ForceScratch,
-    /// The non-affine viscosity's force per fluid particle [N] (empty without it).
-    nonaffine: Vec<crate::state::Vec3>,
+    /// The non-affine viscosity's scratch (empty without it).
+    nonaffine: NonAffineScratch,
     /// Scratch of the fluid's re-sort, kept between rebuilds.
     rebuild: neighbours::RebuildScratch,
     /// The implicit viscous solves of this process (zero without implicit viscosity).
     pub viscous_solves: ViscousSolves,
     /// Scratch of the implicit viscous solve, kept between steps.
     viscous: viscous::ViscousScratch,
+}
+
+/// The non-affine viscosity's fitted gradients [1/s] and force [N] per fluid particle, kept
+/// between steps.
+#[derive(Clone, Debug, Default)]
+struct NonAffineScratch {
+    gradient: Vec<nalgebra::Matrix3<f64>>,
+    force: Vec<crate::state::Vec3>,
 }
 
 impl Simulation {
@@ -175,7 +183,7 @@ impl Simulation {
             surface_stress: Default::default(),
             surface_force: Default::default(),
             rebuild: Default::default(),
-            nonaffine: Vec::new(),
+            nonaffine: Default::default(),
             viscous_solves: Default::default(),
             viscous: Default::default(),
             shift,

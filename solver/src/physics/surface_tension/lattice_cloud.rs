@@ -89,6 +89,24 @@ pub fn lattice_sites(n: [usize; 3], l0_m: f64) -> Vec<Vec3> {
     v
 }
 
+/// The lattice sites of [`lattice_sites`], each moved by up to `±amplitude_m/2` [m] per axis
+/// by a fixed pseudo-random sequence (a 64-bit LCG from seed 12345): a disordered cloud that
+/// is the same on every machine, for tests.
+#[cfg(test)]
+pub fn jittered_sites(n: [usize; 3], l0_m: f64, amplitude_m: f64) -> Vec<Vec3> {
+    let mut state = 12345u64;
+    let mut rnd = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    lattice_sites(n, l0_m)
+        .into_iter()
+        .map(|x| x + Vec3::new(rnd(), rnd(), rnd()) * amplitude_m)
+        .collect()
+}
+
 /// The kernel's second moment on the lattice, `M = −l0³ Σ_{δ≠0} W′(|δ|) δ_z²/|δ|` over the
 /// lattice offsets δ [-]: 1 in the continuum (`−∫ z ∂_z W = ∫ W = 1`). With the colour kernel,
 /// a flat (001) interface's `Σ V |∇c|` per area is `M` (the pairs straddling it give `M/2`

@@ -81,17 +81,8 @@ fn a_bulk_carries_no_stress_however_its_particles_sit() {
 #[test]
 fn linear_momentum_is_conserved_on_a_disordered_two_phase_cloud() {
     // a jittered lattice with a sphere of phase 1: every pair force has its exact opposite
-    let mut state = 12345u64;
-    let mut rnd = || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    let pos: Vec<Vec3> = lattice([14, 14, 14])
-        .into_iter()
-        .map(|x| x + Vec3::new(rnd(), rnd(), rnd()) * 0.4 * L0)
-        .collect();
+    let pos =
+        crate::physics::surface_tension::lattice_cloud::jittered_sites([14, 14, 14], L0, 0.4 * L0);
     let centre = Vec3::repeat(7.0 * L0);
     let c = cloud(
         pos,
